@@ -1,0 +1,123 @@
+// Stand-in vector types. Semantics per the Unity.Mathematics 1.3 API reference:
+// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3.html (float2, float4, bool3, int3 alike)
+using System;
+using System.Runtime.CompilerServices;
+
+namespace Unity.Mathematics
+{
+    [Serializable]
+    public struct float2 : IEquatable<float2>
+    {
+        public float x, y;
+        public static readonly float2 zero;
+        public float2(float x, float y) { this.x = x; this.y = y; }
+        public float2(float v) { x = v; y = v; }
+        public static implicit operator float2(float v) => new float2(v);
+        public static float2 operator +(float2 a, float2 b) => new float2(a.x + b.x, a.y + b.y);
+        public static float2 operator -(float2 a, float2 b) => new float2(a.x - b.x, a.y - b.y);
+        public static float2 operator *(float2 a, float2 b) => new float2(a.x * b.x, a.y * b.y);
+        public static float2 operator /(float2 a, float2 b) => new float2(a.x / b.x, a.y / b.y);
+        public static float2 operator -(float2 a) => new float2(-a.x, -a.y);
+        public bool Equals(float2 o) => x == o.x && y == o.y;
+        public override bool Equals(object o) => o is float2 v && Equals(v);
+        public override int GetHashCode() => HashCode.Combine(x, y);
+        public override string ToString() => $"float2({x}f, {y}f)";
+    }
+
+    [Serializable]
+    public struct float3 : IEquatable<float3>, IFormattable
+    {
+        public float x, y, z;
+        public static readonly float3 zero;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public float3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+        public float3(float v) { x = v; y = v; z = v; }
+        public float3(float2 xy, float z) { x = xy.x; y = xy.y; this.z = z; }
+        public static implicit operator float3(float v) => new float3(v);
+        public float2 xy => new float2(x, y);
+        public float2 xz => new float2(x, z);
+        public float3 yzx => new float3(y, z, x);
+        public float3 zxy => new float3(z, x, y);
+        public unsafe ref float this[int index]
+        {
+            get
+            {
+                if ((uint)index >= 3) throw new ArgumentException("index must be between[0...2]");
+                fixed (float3* array = &this) { return ref ((float*)array)[index]; }
+            }
+        }
+        public static float3 operator +(float3 a, float3 b) => new float3(a.x + b.x, a.y + b.y, a.z + b.z);
+        public static float3 operator -(float3 a, float3 b) => new float3(a.x - b.x, a.y - b.y, a.z - b.z);
+        public static float3 operator *(float3 a, float3 b) => new float3(a.x * b.x, a.y * b.y, a.z * b.z);
+        public static float3 operator /(float3 a, float3 b) => new float3(a.x / b.x, a.y / b.y, a.z / b.z);
+        public static float3 operator +(float3 a, float b) => new float3(a.x + b, a.y + b, a.z + b);
+        public static float3 operator -(float3 a, float b) => new float3(a.x - b, a.y - b, a.z - b);
+        public static float3 operator *(float3 a, float b) => new float3(a.x * b, a.y * b, a.z * b);
+        public static float3 operator *(float a, float3 b) => new float3(a * b.x, a * b.y, a * b.z);
+        public static float3 operator /(float3 a, float b) => new float3(a.x / b, a.y / b, a.z / b);
+        public static float3 operator /(float a, float3 b) => new float3(a / b.x, a / b.y, a / b.z);
+        public static float3 operator -(float3 a) => new float3(-a.x, -a.y, -a.z);
+        public static bool3 operator <(float3 a, float3 b) => new bool3(a.x < b.x, a.y < b.y, a.z < b.z);
+        public static bool3 operator >(float3 a, float3 b) => new bool3(a.x > b.x, a.y > b.y, a.z > b.z);
+        public static bool3 operator <=(float3 a, float3 b) => new bool3(a.x <= b.x, a.y <= b.y, a.z <= b.z);
+        public static bool3 operator >=(float3 a, float3 b) => new bool3(a.x >= b.x, a.y >= b.y, a.z >= b.z);
+        public static bool3 operator ==(float3 a, float3 b) => new bool3(a.x == b.x, a.y == b.y, a.z == b.z);
+        public static bool3 operator !=(float3 a, float3 b) => new bool3(a.x != b.x, a.y != b.y, a.z != b.z);
+        public bool Equals(float3 o) => x == o.x && y == o.y && z == o.z;
+        public override bool Equals(object o) => o is float3 v && Equals(v);
+        public override int GetHashCode() => HashCode.Combine(x, y, z);
+        public override string ToString() => $"float3({x}f, {y}f, {z}f)";
+        public string ToString(string format, IFormatProvider formatProvider) =>
+            $"float3({x.ToString(format, formatProvider)}f, {y.ToString(format, formatProvider)}f, {z.ToString(format, formatProvider)}f)";
+    }
+
+    [Serializable]
+    public struct float4 : IEquatable<float4>
+    {
+        public float x, y, z, w;
+        public static readonly float4 zero;
+        public float4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+        public float4(float3 xyz, float w) { x = xyz.x; y = xyz.y; z = xyz.z; this.w = w; }
+        public float4(float v) { x = v; y = v; z = v; w = v; }
+        public static implicit operator float4(float v) => new float4(v);
+        public float3 xyz { get => new float3(x, y, z); set { x = value.x; y = value.y; z = value.z; } }
+        public static float4 operator +(float4 a, float4 b) => new float4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
+        public static float4 operator -(float4 a, float4 b) => new float4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
+        public static float4 operator *(float4 a, float4 b) => new float4(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w);
+        public static float4 operator *(float4 a, float b) => new float4(a.x * b, a.y * b, a.z * b, a.w * b);
+        public static float4 operator *(float a, float4 b) => new float4(a * b.x, a * b.y, a * b.z, a * b.w);
+        public static float4 operator /(float4 a, float b) => new float4(a.x / b, a.y / b, a.z / b, a.w / b);
+        public static float4 operator -(float4 a) => new float4(-a.x, -a.y, -a.z, -a.w);
+        public bool Equals(float4 o) => x == o.x && y == o.y && z == o.z && w == o.w;
+        public override bool Equals(object o) => o is float4 v && Equals(v);
+        public override int GetHashCode() => HashCode.Combine(x, y, z, w);
+        public override string ToString() => $"float4({x}f, {y}f, {z}f, {w}f)";
+    }
+
+    [Serializable]
+    public struct int3 : IEquatable<int3>
+    {
+        public int x, y, z;
+        public int3(int x, int y, int z) { this.x = x; this.y = y; this.z = z; }
+        public static int3 operator +(int3 a, int3 b) => new int3(a.x + b.x, a.y + b.y, a.z + b.z);
+        public static int3 operator -(int3 a, int3 b) => new int3(a.x - b.x, a.y - b.y, a.z - b.z);
+        public bool Equals(int3 o) => x == o.x && y == o.y && z == o.z;
+        public override bool Equals(object o) => o is int3 v && Equals(v);
+        public override int GetHashCode() => HashCode.Combine(x, y, z);
+        public override string ToString() => $"int3({x}, {y}, {z})";
+    }
+
+    [Serializable]
+    public struct bool3
+    {
+        public bool x, y, z;
+        public bool3(bool x, bool y, bool z) { this.x = x; this.y = y; this.z = z; }
+    }
+
+    [Serializable]
+    public struct bool4
+    {
+        public bool x, y, z, w;
+        public bool4(bool x, bool y, bool z, bool w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+    }
+}

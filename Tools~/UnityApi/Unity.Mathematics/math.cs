@@ -1,0 +1,164 @@
+// Stand-in for the static class Unity.Mathematics.math. Semantics per
+// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.html
+using System;
+using System.Runtime.CompilerServices;
+
+namespace Unity.Mathematics
+{
+    public static class math
+    {
+        public const float PI = 3.14159265358979323846f;
+        public const float EPSILON = 1.1920928955078125e-7f;
+        public const float FLT_MIN_NORMAL = 1.175494351e-38f;
+        public const float INFINITY = float.PositiveInfinity;
+
+        // ---- construction helpers
+        public static float2 float2(float x, float y) => new float2(x, y);
+        public static float3 float3(float x, float y, float z) => new float3(x, y, z);
+        public static float3 float3(float v) => new float3(v);
+        public static float4 float4(float x, float y, float z, float w) => new float4(x, y, z, w);
+        public static float4 float4(float3 xyz, float w) => new float4(xyz, w);
+        public static float3x3 float3x3(float3 c0, float3 c1, float3 c2) => new float3x3(c0, c1, c2);
+        public static float3x3 float3x3(quaternion q) => new float3x3(q);
+        public static int3 int3(int x, int y, int z) => new int3(x, y, z);
+        public static quaternion quaternion(float4 v) => new quaternion(v);
+        public static quaternion quaternion(float3x3 m) => new quaternion(m);
+
+        // ---- scalar
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sqrt(float x) => (float)System.Math.Sqrt(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float rsqrt(float x) => 1.0f / sqrt(x);
+        public static float abs(float x) => System.Math.Abs(x);
+        public static int abs(int x) => System.Math.Abs(x);
+        public static float min(float a, float b) => float.IsNaN(b) || a < b ? a : b;
+        public static float max(float a, float b) => float.IsNaN(b) || a > b ? a : b;
+        public static int min(int a, int b) => a < b ? a : b;
+        public static int max(int a, int b) => a > b ? a : b;
+        public static uint min(uint a, uint b) => a < b ? a : b;
+        public static uint max(uint a, uint b) => a > b ? a : b;
+        public static float clamp(float x, float a, float b) => max(a, min(b, x));
+        public static int clamp(int x, int a, int b) => max(a, min(b, x));
+        public static float saturate(float x) => clamp(x, 0f, 1f);
+        public static float sign(float x) => (x > 0f ? 1f : 0f) - (x < 0f ? 1f : 0f);
+        public static float select(float a, float b, bool c) => c ? b : a;
+        public static float lerp(float a, float b, float t) => a + t * (b - a);
+        public static float pow(float x, float y) => (float)System.Math.Pow(x, y);
+        public static float exp(float x) => (float)System.Math.Exp(x);
+        public static float log(float x) => (float)System.Math.Log(x);
+        public static float sin(float x) => (float)System.Math.Sin(x);
+        public static float cos(float x) => (float)System.Math.Cos(x);
+        public static float acos(float x) => (float)System.Math.Acos(x);
+        public static float asin(float x) => (float)System.Math.Asin(x);
+        public static float atan2(float y, float x) => (float)System.Math.Atan2(y, x);
+        public static float floor(float x) => (float)System.Math.Floor(x);
+        public static float ceil(float x) => (float)System.Math.Ceiling(x);
+        public static float round(float x) => (float)System.Math.Round(x);
+        public static void sincos(float x, out float s, out float c) { s = sin(x); c = cos(x); }
+        public static bool isfinite(float x) => abs(x) < float.PositiveInfinity;
+        public static bool isnan(float x) => (asuint(x) & 0x7FFFFFFF) > 0x7F800000;
+        public static uint asuint(float x) => (uint)BitConverter.SingleToInt32Bits(x);
+        public static int asint(float x) => BitConverter.SingleToInt32Bits(x);
+        public static float asfloat(uint x) => BitConverter.Int32BitsToSingle((int)x);
+        public static float asfloat(int x) => BitConverter.Int32BitsToSingle(x);
+        public static double sqrt(double x) => System.Math.Sqrt(x);
+        public static double abs(double x) => System.Math.Abs(x);
+        public static double max(double a, double b) => double.IsNaN(b) || a > b ? a : b;
+        public static double min(double a, double b) => double.IsNaN(b) || a < b ? a : b;
+
+        // ---- bool vectors
+        public static bool any(bool3 x) => x.x || x.y || x.z;
+        public static bool all(bool3 x) => x.x && x.y && x.z;
+        public static bool any(bool4 x) => x.x || x.y || x.z || x.w;
+        public static bool all(bool4 x) => x.x && x.y && x.z && x.w;
+
+        // ---- float3
+        public static float dot(float3 a, float3 b) => a.x * b.x + a.y * b.y + a.z * b.z;
+        public static float3 cross(float3 a, float3 b) => (a * b.yzx - a.yzx * b).yzx;
+        public static float lengthsq(float3 x) => dot(x, x);
+        public static float length(float3 x) => sqrt(dot(x, x));
+        public static float distance(float3 a, float3 b) => length(b - a);
+        public static float distancesq(float3 a, float3 b) => lengthsq(b - a);
+        public static float3 normalize(float3 x) => rsqrt(dot(x, x)) * x;
+        public static float3 normalizesafe(float3 x, float3 defaultvalue = default)
+        {
+            float len = dot(x, x);
+            return select(defaultvalue, x * rsqrt(len), len > FLT_MIN_NORMAL);
+        }
+        public static float3 select(float3 a, float3 b, bool c) => c ? b : a;
+        public static float3 abs(float3 x) => new float3(abs(x.x), abs(x.y), abs(x.z));
+        public static float3 min(float3 a, float3 b) => new float3(min(a.x, b.x), min(a.y, b.y), min(a.z, b.z));
+        public static float3 max(float3 a, float3 b) => new float3(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z));
+        public static float3 clamp(float3 x, float3 a, float3 b) => max(a, min(b, x));
+        public static float3 lerp(float3 a, float3 b, float t) => a + t * (b - a);
+        public static float3 sign(float3 x) => new float3(sign(x.x), sign(x.y), sign(x.z));
+        public static float3 floor(float3 x) => new float3(floor(x.x), floor(x.y), floor(x.z));
+        public static float csum(float3 x) => x.x + x.y + x.z;
+        public static float cmax(float3 x) => max(max(x.x, x.y), x.z);
+        public static float cmin(float3 x) => min(min(x.x, x.y), x.z);
+        public static bool3 isfinite(float3 x) => new bool3(isfinite(x.x), isfinite(x.y), isfinite(x.z));
+        public static bool3 isnan(float3 x) => new bool3(isnan(x.x), isnan(x.y), isnan(x.z));
+        public static int3 int3(float3 v) => new int3((int)v.x, (int)v.y, (int)v.z);
+
+        // ---- float4
+        public static float dot(float4 a, float4 b) => a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+        public static float length(float4 x) => sqrt(dot(x, x));
+        public static float lengthsq(float4 x) => dot(x, x);
+        public static float4 normalize(float4 x) => rsqrt(dot(x, x)) * x;
+        public static float4 select(float4 a, float4 b, bool c) => c ? b : a;
+        public static float4 abs(float4 x) => new float4(abs(x.x), abs(x.y), abs(x.z), abs(x.w));
+        public static bool4 isfinite(float4 x) => new bool4(isfinite(x.x), isfinite(x.y), isfinite(x.z), isfinite(x.w));
+
+        // ---- float3x3
+        public static float3 mul(float3x3 a, float3 b) => a.c0 * b.x + a.c1 * b.y + a.c2 * b.z;
+        public static float3x3 mul(float3x3 a, float3x3 b) => new float3x3(mul(a, b.c0), mul(a, b.c1), mul(a, b.c2));
+        public static float3x3 transpose(float3x3 v) =>
+            new float3x3(v.c0.x, v.c0.y, v.c0.z, v.c1.x, v.c1.y, v.c1.z, v.c2.x, v.c2.y, v.c2.z);
+        public static float determinant(float3x3 m)
+        {
+            float3 c0 = m.c0, c1 = m.c1, c2 = m.c2;
+            float m00 = c1.y * c2.z - c1.z * c2.y;
+            float m01 = c0.y * c2.z - c0.z * c2.y;
+            float m02 = c0.y * c1.z - c0.z * c1.y;
+            return c0.x * m00 - c1.x * m01 + c2.x * m02;
+        }
+        public static float3x3 inverse(float3x3 m)
+        {
+            float3 c0 = m.c0, c1 = m.c1, c2 = m.c2;
+            float3 t0 = new float3(c1.x, c2.x, c0.x), t1 = new float3(c1.y, c2.y, c0.y), t2 = new float3(c1.z, c2.z, c0.z);
+            float3 m0 = t1 * t2.yzx - t1.yzx * t2;
+            float3 m1 = t0.yzx * t2 - t0 * t2.yzx;
+            float3 m2 = t0 * t1.yzx - t0.yzx * t1;
+            float rcpDet = 1.0f / csum(t0.zxy * m0);
+            return new float3x3(m0, m1, m2) * rcpDet;
+        }
+        public static bool3 isfinite(float3x3 m) => new bool3(all(isfinite(m.c0)), all(isfinite(m.c1)), all(isfinite(m.c2)));
+
+        // ---- quaternion
+        public static float dot(quaternion a, quaternion b) => dot(a.value, b.value);
+        public static float length(quaternion q) => sqrt(dot(q.value, q.value));
+        public static float lengthsq(quaternion q) => dot(q.value, q.value);
+        public static quaternion normalize(quaternion q) => new quaternion(rsqrt(dot(q.value, q.value)) * q.value);
+        public static quaternion normalizesafe(quaternion q)
+        {
+            float len = dot(q.value, q.value);
+            return new quaternion(select(Mathematics.quaternion.identity.value, q.value * rsqrt(len), len > FLT_MIN_NORMAL));
+        }
+        public static quaternion conjugate(quaternion q) => new quaternion(-q.value.x, -q.value.y, -q.value.z, q.value.w);
+        public static quaternion inverse(quaternion q) => new quaternion(conjugate(q).value / dot(q.value, q.value));
+        /// <summary>Hamilton product a·b (apply b, then a).</summary>
+        public static quaternion mul(quaternion a, quaternion b)
+        {
+            float4 p = a.value, q = b.value;
+            return new quaternion(
+                p.w * q.x + p.x * q.w + p.y * q.z - p.z * q.y,
+                p.w * q.y - p.x * q.z + p.y * q.w + p.z * q.x,
+                p.w * q.z + p.x * q.y - p.y * q.x + p.z * q.w,
+                p.w * q.w - p.x * q.x - p.y * q.y - p.z * q.z);
+        }
+        public static float3 rotate(quaternion q, float3 v)
+        {
+            float3 t = 2f * cross(q.value.xyz, v);
+            return v + q.value.w * t + cross(q.value.xyz, t);
+        }
+        public static float3 mul(quaternion q, float3 v) => rotate(q, v);
+    }
+}
