@@ -31,7 +31,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Default cap on iterations when warm-started from the previous step's rotation.</summary>
         public const int DefaultMaxIterations = 20;
 
-        /// <summary>Default stopping threshold on |ω| (radians per iteration).</summary>
+        /// <summary>Default stopping threshold on Müller's |ω| = |Σ rᵢ × aᵢ| / |tr(RᵀA)| (radians).</summary>
         public const float DefaultTolerance = 1e-6f;
 
         /// <summary>Denominator guard of eq. (7), relative to the normalised A.</summary>
@@ -40,8 +40,14 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Smallest accepted det H relative to tr(S)³ for a plain Newton step (H's condition ≲ 1e6).</summary>
         const float k_NewtonMargin = 1e-6f;
 
+        /// <summary>λmin(H) below −margin·|tr S| is taken as negative curvature (beyond float32 noise).</summary>
+        const float k_HalfTurnMargin = 1e-4f;
+
         /// <summary>δ: smallest eigenvalue of the shifted Hessian, relative to |tr S|.</summary>
         const float k_ShiftFraction = 0.1f;
+
+        /// <summary>Relative drop of tr(RᵀA) that triggers backtracking (≈ 80 ε of float32).</summary>
+        const float k_TraceDropTolerance = 1e-5f;
 
         /// <summary>Longest step per iteration, in radians (beyond it the quadratic model is not trusted).</summary>
         const float k_MaxStepAngle = 1f;
@@ -53,7 +59,7 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="a">Any 3×3 matrix, e.g. A_pq = Σ mᵢ pᵢ qᵢᵀ of shape matching.</param>
         /// <param name="q">In: warm start. Out: unit quaternion of the extracted rotation.</param>
         /// <param name="maxIterations">Iteration cap (≥ 0).</param>
-        /// <param name="tolerance">Stop when the update angle |ω| falls below this, in radians.</param>
+        /// <param name="tolerance">Stop when |ω| = |Σ rᵢ × aᵢ| / |tr(RᵀA)| falls below this, in radians.</param>
         public static int Extract(in float3x3 a, ref quaternion q, int maxIterations = DefaultMaxIterations,
             float tolerance = DefaultTolerance)
         {
@@ -72,7 +78,7 @@ namespace SoftBodyDynamics.Solvers
             int iterations = Iterate(an, ref q, maxIterations, tolerance);
 
             if (EscapeSaddle(an, ref q))
-                iterations += Iterate(an, ref q, maxIterations, tolerance);
+                iterations += Iterate(an, ref q, maxIterations - iterations, tolerance);
             return iterations;
         }
 
@@ -96,22 +102,48 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         static int Iterate(in float3x3 a, ref quaternion q, int maxIterations, float tolerance)
         {
+            // Backtracking: a step that lowered tr(RᵀA) (a Newton step past a ridge) is halved and
+            // retried from the previous rotation, so the objective never decreases and no cycle forms.
+            quaternion qPrev = q;
+            float3 thetaPrev = float3.zero;
+            float tracePrev = float.NegativeInfinity;
             for (int i = 0; i < maxIterations; i++)
             {
                 float3x3 r = new float3x3(q);
-                float3 g = math.cross(r.c0, a.c0) + math.cross(r.c1, a.c1) + math.cross(r.c2, a.c2);
                 float3x3 s = math.mul(a, math.transpose(r));
                 float trace = s.c0.x + s.c1.y + s.c2.z;
-                float3 theta = Step(s, g, trace);
+                // Only a drop well above float32 round-off of the trace counts: near the optimum a
+                // Newton step gains ~θ²·σ, far below what float32 resolves.
+                if (trace < tracePrev - k_TraceDropTolerance * math.abs(tracePrev))
+                {
+                    thetaPrev *= 0.5f;
+                    float half = math.length(thetaPrev);
+                    if (!(half >= tolerance))
+                    {
+                        q = qPrev;
+                        return i;
+                    }
+                    q = math.normalize(math.mul(quaternion.AxisAngle(thetaPrev * (1f / half), half), qPrev));
+                    continue;
+                }
 
-                float w = math.length(theta);
-                if (!(w >= tolerance)) // also stops on NaN
+                float3 g = math.cross(r.c0, a.c0) + math.cross(r.c1, a.c1) + math.cross(r.c2, a.c2);
+                // Stop on Müller's |ω| = |g| / |tr S|: it measures the residual itself, whereas the
+                // Newton step amplifies float32 noise in g by 1/λmin(H) on nearly flat axes.
+                if (!(math.length(g) >= tolerance * (math.abs(trace) + k_DenominatorEpsilon))) // also stops on NaN
                     return i;
-                if (w > k_MaxStepAngle)
+                float3 theta = Step(s, g, trace);
+                float w = math.length(theta);
+                if (!(w > 0f))
+                    return i;
+                if (w > k_MaxStepAngle && w < 3f) // half turns (w = π) pass uncapped
                 {
                     theta *= k_MaxStepAngle / w;
                     w = k_MaxStepAngle;
                 }
+                qPrev = q;
+                thetaPrev = theta;
+                tracePrev = trace;
                 q = math.normalize(math.mul(quaternion.AxisAngle(theta * (1f / w), w), q));
             }
             return maxIterations;
@@ -129,9 +161,20 @@ namespace SoftBodyDynamics.Solvers
             if (TrySolveSpd(h00, h11, h22, h01, h02, h12, g, k_NewtonMargin * t * t * t, out float3 theta))
                 return theta;
 
-            // Levenberg–Marquardt shift: eig(H) = tr S − eig(sym S), so λmin(H) = tr S − λmax(sym S).
+            // eig(H) = tr S − eig(sym S), so λmin(H) = tr S − λ₁ with λ₁ = λmax(sym S).
             float3x3 sym = 0.5f * (s + math.transpose(s));
-            float lambdaMinH = trace - LargestEigenvalue(sym);
+            float lambda1 = LargestEigenvalue(sym);
+            float lambdaMinH = trace - lambda1;
+            if (lambdaMinH < -k_HalfTurnMargin * t)
+            {
+                // Negative curvature: R sits on the wrong sheet (it would converge to a saddle).
+                // A half turn about the eigenvector v of λ₁ changes tr(RᵀA) to
+                // tr(S (2vvᵀ − I)) = 2λ₁ − tr S, a gain of −2 λmin(H) > 0, exactly.
+                float3 v = EigenvectorOf(sym, lambda1);
+                if (math.lengthsq(v) > 0f)
+                    return v * math.PI;
+            }
+            // Levenberg–Marquardt shift so that λmin(H + μI) = δ·|tr S|.
             float mu = math.max(0f, k_ShiftFraction * t - lambdaMinH);
             if (TrySolveSpd(h00 + mu, h11 + mu, h22 + mu, h01, h02, h12, g, 0f, out theta))
                 return theta;

@@ -1,0 +1,56 @@
+using System.Collections.Generic;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>An error metric a scenario reports beside its time (name, value, unit, lower is better).</summary>
+    public readonly struct Metric
+    {
+        public readonly string Name;
+        public readonly double Value;
+        public readonly string Unit;
+
+        public Metric(string name, double value, string unit = "")
+        {
+            Name = name;
+            Value = value;
+            Unit = unit;
+        }
+    }
+
+    /// <summary>
+    /// A benchmark scenario shared by the headless runner (.NET) and the Unity Performance tests:
+    /// a named workload, one method and one size. The harness calls <see cref="Setup"/>, then
+    /// <see cref="Step"/> repeatedly (warm-up, then timed), then <see cref="Evaluate"/> for the
+    /// error metrics. Scenarios own their data; Step must not allocate.
+    /// </summary>
+    public interface IScenario
+    {
+        /// <summary>Workload, e.g. "RotationExtraction".</summary>
+        string Name { get; }
+        /// <summary>Method and setting, e.g. "warm, ≤20 it".</summary>
+        string Method { get; }
+        /// <summary>Problem size in <see cref="SizeUnit"/>.</summary>
+        int Size { get; }
+        /// <summary>Unit of <see cref="Size"/> and of throughput, e.g. "matrices", "particles".</summary>
+        string SizeUnit { get; }
+        /// <summary>Work items per Step, for the time-per-item column (e.g. decompositions).</summary>
+        long ItemsPerStep { get; }
+
+        void Setup();
+        void Step();
+        IReadOnlyList<Metric> Evaluate();
+    }
+
+    /// <summary>Groups of scenarios the runner knows, with the figure each group plots.</summary>
+    public interface IScenarioSuite
+    {
+        /// <summary>Suite name, used for the report section and figure file names.</summary>
+        string Name { get; }
+        /// <summary>One paragraph for the report: what is measured and against which reference.</summary>
+        string Description { get; }
+        /// <summary>Scenarios of the full run.</summary>
+        IEnumerable<IScenario> Scenarios(bool quick);
+        /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure.</summary>
+        string ErrorMetricForPlot { get; }
+    }
+}

@@ -1,0 +1,13 @@
+using System.Collections.Generic;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>Every suite the headless runner and the Unity Performance tests run, in report order.</summary>
+    public static class ScenarioCatalog
+    {
+        public static IReadOnlyList<IScenarioSuite> Suites { get; } = new IScenarioSuite[]
+        {
+            new RotationExtractionSuite(),
+        };
+    }
+}

@@ -1,0 +1,100 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+
+namespace SoftBodyDynamics.Runner
+{
+    /// <summary>
+    /// Headless scenario runner: runs every suite of <see cref="ScenarioCatalog"/>, prints a table
+    /// (scenario, method, size, ms per step, ns per item, error metrics) and writes a Markdown
+    /// report with PNG figures.
+    /// Usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT]
+    /// </summary>
+    static class Program
+    {
+        static int Main(string[] args)
+        {
+            CultureInfo.DefaultThreadCurrentCulture = CultureInfo.InvariantCulture;
+            CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
+            var options = RunOptions.Parse(args);
+            if (options == null)
+            {
+                Console.Error.WriteLine("usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT]");
+                return 2;
+            }
+
+            Directory.CreateDirectory(options.OutDir);
+            var results = new List<SuiteResult>();
+            foreach (IScenarioSuite suite in ScenarioCatalog.Suites)
+            {
+                if (options.Filter != null && suite.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) < 0)
+                    continue;
+                var suiteResult = new SuiteResult(suite);
+                Console.WriteLine();
+                Console.WriteLine($"== {suite.Name}");
+                TablePrinter.PrintHeader(Console.Out);
+                foreach (IScenario scenario in suite.Scenarios(options.Quick))
+                {
+                    ScenarioResult r = ScenarioTimer.Run(scenario, options.Repeats);
+                    suiteResult.Rows.Add(r);
+                    TablePrinter.PrintRow(Console.Out, r);
+                }
+                results.Add(suiteResult);
+            }
+
+            string reportPath = ReportWriter.Write(options, results);
+            Console.WriteLine();
+            Console.WriteLine($"Report written to {reportPath}");
+            return 0;
+        }
+    }
+
+    sealed class RunOptions
+    {
+        public string OutDir = Path.Combine("Reports~", "latest");
+        public bool Quick;
+        public int Repeats = 15;
+        public string Filter;
+
+        public static RunOptions Parse(string[] args)
+        {
+            var o = new RunOptions();
+            for (int i = 0; i < args.Length; i++)
+            {
+                switch (args[i])
+                {
+                    case "--out" when i + 1 < args.Length: o.OutDir = args[++i]; break;
+                    case "--quick": o.Quick = true; break;
+                    case "--repeats" when i + 1 < args.Length && int.TryParse(args[i + 1], out int n) && n > 0:
+                        o.Repeats = n; i++; break;
+                    case "--filter" when i + 1 < args.Length: o.Filter = args[++i]; break;
+                    default: return null;
+                }
+            }
+            return o;
+        }
+    }
+
+    sealed class SuiteResult
+    {
+        public readonly IScenarioSuite Suite;
+        public readonly List<ScenarioResult> Rows = new List<ScenarioResult>();
+        public SuiteResult(IScenarioSuite suite) { Suite = suite; }
+    }
+
+    sealed class ScenarioResult
+    {
+        public string Name, Method, SizeUnit;
+        public int Size;
+        public long ItemsPerStep;
+        public int Repeats;
+        public double MedianMs, MinMs, MaxMs;
+        public IReadOnlyList<Metric> Metrics;
+        public double NsPerItem => MedianMs * 1e6 / Math.Max(1, ItemsPerStep);
+        public double ItemsPerSecond => ItemsPerStep / (MedianMs * 1e-3);
+        public double MetricValue(string name) => Metrics.FirstOrDefault(m => m.Name == name).Value;
+    }
+}

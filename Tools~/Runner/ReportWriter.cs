@@ -1,0 +1,169 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text;
+
+namespace SoftBodyDynamics.Runner
+{
+    /// <summary>Writes report.md, results.csv and, with gnuplot, one accuracy-versus-cost and one scaling figure per suite.</summary>
+    static class ReportWriter
+    {
+        /// <summary>Errors of exactly 0 are drawn at this floor on log axes (and said so in the caption).</summary>
+        const double k_LogFloor = 1e-12;
+
+        public static string Write(RunOptions options, List<SuiteResult> suites)
+        {
+            string dir = Path.GetFullPath(options.OutDir);
+            var md = new StringBuilder();
+            md.AppendLine("# Soft Body Dynamics — headless scenario report");
+            md.AppendLine();
+            md.AppendLine($"- Date (UTC): {DateTime.UtcNow:yyyy-MM-dd HH:mm}");
+            md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
+            md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread — not Burst; Burst numbers come from the Unity Performance tests)");
+            md.AppendLine($"- Timing: median of {options.Repeats} timed steps after at least 0.3 s and 3 steps of warm-up{(options.Quick ? "; quick run (reduced sizes)" : "")}");
+            md.AppendLine();
+
+            var csv = new StringBuilder("suite,scenario,method,size,size_unit,median_ms,min_ms,max_ms,ns_per_item,items_per_s,metric,value\n");
+            bool gnuplot = HasGnuplot();
+            foreach (SuiteResult s in suites)
+            {
+                md.AppendLine($"## {s.Suite.Name}");
+                md.AppendLine();
+                md.AppendLine(s.Suite.Description);
+                md.AppendLine();
+                var metricNames = s.Rows.SelectMany(r => r.Metrics.Select(m => m.Name)).Distinct().ToList();
+                md.AppendLine("| method | size | ms/step | ns/item | items/s | " + string.Join(" | ", metricNames) + " |");
+                md.AppendLine("|---|---:|---:|---:|---:|" + string.Concat(metricNames.Select(_ => "---:|")));
+                foreach (ScenarioResult r in s.Rows)
+                {
+                    md.Append($"| {r.Method} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {r.ItemsPerSecond:0.00E+0} |");
+                    foreach (string n in metricNames) md.Append($" {Format.Value(r.MetricValue(n))} |");
+                    md.AppendLine();
+                    foreach (var m in r.Metrics)
+                        csv.AppendLine(string.Join(",", s.Suite.Name, r.Name, Quote(r.Method), r.Size, r.SizeUnit,
+                            F(r.MedianMs), F(r.MinMs), F(r.MaxMs), F(r.NsPerItem), F(r.ItemsPerSecond), Quote(m.Name), F(m.Value)));
+                }
+                md.AppendLine();
+
+                if (gnuplot)
+                {
+                    string pareto = PlotAccuracyVersusCost(dir, s);
+                    if (pareto != null)
+                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against ns per item]({pareto})").AppendLine()
+                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against time per item (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
+                    string scaling = PlotScaling(dir, s);
+                    if (scaling != null)
+                        md.AppendLine($"![{s.Suite.Name}: time per item against size]({scaling})").AppendLine()
+                          .AppendLine("*Time per item against problem size: flat means cost linear in N.*").AppendLine();
+                }
+                else
+                {
+                    md.AppendLine("*Figures skipped: gnuplot not found (the setup script installs Debian's gnuplot-nox).*").AppendLine();
+                }
+            }
+
+            File.WriteAllText(Path.Combine(dir, "results.csv"), csv.ToString());
+            string path = Path.Combine(dir, "report.md");
+            File.WriteAllText(path, md.ToString());
+            return path;
+        }
+
+        static string PlotAccuracyVersusCost(string dir, SuiteResult s)
+        {
+            string metric = s.Suite.ErrorMetricForPlot;
+            var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
+            if (rows.Count == 0) return null;
+            string name = $"{s.Suite.Name}-accuracy-vs-cost";
+            var dat = new StringBuilder();
+            foreach (var r in rows)
+                dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{r.Method} (N={r.Size})\"");
+            File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
+            string gp = $@"set terminal pngcairo size 960,600 font ',10'
+set output '{name}.png'
+set title '{s.Suite.Name}: accuracy against cost'
+set xlabel 'ns per {rows[0].SizeUnit.TrimEnd('s')} (median)'
+set ylabel '{metric}'
+set logscale xy
+set grid
+set key off
+plot '{name}.dat' using 1:2 with points pt 7 ps 1.2, '' using 1:2:3 with labels offset 1,0.6 left font ',8'
+";
+            return RunGnuplot(dir, name, gp);
+        }
+
+        static string PlotScaling(string dir, SuiteResult s)
+        {
+            var groups = s.Rows.GroupBy(r => r.Method).Where(g => g.Select(r => r.Size).Distinct().Count() > 1).ToList();
+            if (groups.Count == 0) return null;
+            string name = $"{s.Suite.Name}-scaling";
+            var dat = new StringBuilder();
+            var plots = new List<string>();
+            int index = 0;
+            foreach (var g in groups)
+            {
+                foreach (var r in g.OrderBy(r => r.Size)) dat.AppendLine($"{r.Size} {F(r.NsPerItem)}");
+                dat.AppendLine().AppendLine();
+                plots.Add($"'{name}.dat' index {index++} using 1:2 with linespoints pt 7 title '{g.Key.Replace("'", "")}'");
+            }
+            File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
+            string unit = groups[0].First().SizeUnit;
+            string gp = $@"set terminal pngcairo size 960,600 font ',10'
+set output '{name}.png'
+set title '{s.Suite.Name}: time per item against N'
+set xlabel 'N ({unit})'
+set ylabel 'ns per item (median)'
+set logscale x
+set yrange [0:*]
+set grid
+set key top left
+plot {string.Join(", ", plots)}
+";
+            return RunGnuplot(dir, name, gp);
+        }
+
+        static string RunGnuplot(string dir, string name, string script)
+        {
+            string gpPath = Path.Combine(dir, name + ".gp");
+            File.WriteAllText(gpPath, script);
+            var psi = new ProcessStartInfo("gnuplot", name + ".gp")
+            {
+                WorkingDirectory = dir,
+                RedirectStandardError = true,
+                RedirectStandardOutput = true,
+                UseShellExecute = false,
+            };
+            using var p = Process.Start(psi);
+            string err = p.StandardError.ReadToEnd();
+            p.WaitForExit();
+            if (p.ExitCode != 0 || !File.Exists(Path.Combine(dir, name + ".png")))
+            {
+                Console.Error.WriteLine($"gnuplot failed for {name}: {err}");
+                return null;
+            }
+            return name + ".png";
+        }
+
+        static bool HasGnuplot()
+        {
+            string path = Environment.GetEnvironmentVariable("PATH") ?? "";
+            return path.Split(':').Any(d => File.Exists(Path.Combine(d, "gnuplot")));
+        }
+
+        static string CpuName()
+        {
+            try
+            {
+                string line = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name"));
+                return line?.Split(':', 2)[1].Trim() ?? "unknown CPU";
+            }
+            catch (IOException) { return "unknown CPU"; }
+        }
+
+        static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
+        static string Quote(string s) => "\"" + s.Replace("\"", "\"\"") + "\"";
+    }
+}
