@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The main job: runs every benchmark scenario headless, prints the table (scenario, method, size,
+# ms per step, ns per item, error metrics) and writes a Markdown report with PNG figures.
+# Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT]
+# Default report folder: Reports~/latest (relative to the package root).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+bash "Tools~/setup.sh"
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
+dotnet build "Tools~/DotNet/SoftBodyDynamics.Runner/SoftBodyDynamics.Runner.csproj" -c Release --no-restore --verbosity quiet -nologo >/dev/null
+dotnet "Tools~/DotNet/SoftBodyDynamics.Runner/bin/Release/net10.0/SoftBodyDynamics.Runner.dll" "$@"
