@@ -78,19 +78,34 @@ namespace SoftBodyDynamics.Runner
             var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
+            // One series per method family (the text before the first comma), labelled by the rest.
+            var families = rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
             var dat = new StringBuilder();
-            foreach (var r in rows)
-                dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{r.Method} (N={r.Size})\"");
+            var plots = new List<string>();
+            int index = 0;
+            foreach (var f in families)
+            {
+                foreach (var r in f.OrderBy(r => r.NsPerItem))
+                {
+                    string rest = r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() : "";
+                    dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest} N={r.Size}\"");
+                }
+                dat.AppendLine().AppendLine();
+                plots.Add($"'{name}.dat' index {index} using 1:2 with points pt 7 ps 1.3 title '{f.Key.Replace("'", "")}'");
+                plots.Add($"'{name}.dat' index {index} using 1:2:3 with labels offset 0.8,0.5 left rotate by 20 font ',7' notitle");
+                index++;
+            }
             File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
             string gp = $@"set terminal pngcairo size 960,600 font ',10'
 set output '{name}.png'
 set title '{s.Suite.Name}: accuracy against cost'
-set xlabel 'ns per {rows[0].SizeUnit.TrimEnd('s')} (median)'
+set xlabel 'ns per item, median ({rows[0].SizeUnit})'
 set ylabel '{metric}'
 set logscale xy
+set format y '%.0e'
 set grid
-set key off
-plot '{name}.dat' using 1:2 with points pt 7 ps 1.2, '' using 1:2:3 with labels offset 1,0.6 left font ',8'
+set key top right
+plot {string.Join(", ", plots)}
 ";
             return RunGnuplot(dir, name, gp);
         }
