@@ -68,7 +68,7 @@ namespace SoftBodyDynamics.Solvers
             else
                 q = math.normalize(q);
 
-            if (!math.all(math.isfinite(a)))
+            if (!Finite.All(a))
                 return 0; // non-finite input: keep the (finite) warm start; callers detect and report bad state.
             float scale = MaxAbs(a);
             if (!(scale > 0f))

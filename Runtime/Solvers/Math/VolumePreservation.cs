@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Solvers
         {
             normalized = float3x3.identity;
             float scale = math.max(math.cmax(math.abs(a.c0)), math.max(math.cmax(math.abs(a.c1)), math.cmax(math.abs(a.c2))));
-            if (!(scale > 0f) || !math.isfinite(scale) || !math.all(math.isfinite(a)))
+            if (!(scale > 0f) || !math.isfinite(scale) || !Finite.All(a))
                 return false;
             // Normalise first so det cannot under- or overflow in float32.
             float3x3 an = a * (1f / scale);

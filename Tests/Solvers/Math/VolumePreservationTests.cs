@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             float3x3 r = new float3x3(quaternion.AxisAngle(new float3(0f, 1f, 0f), 0.3f));
             float3x3 goal = VolumePreservation.LinearGoalTransform(aLinear, r, 0.5f, out bool fallback);
             Assert.That(fallback, Is.True);
-            Assert.That(math.all(math.isfinite(goal)), Is.True);
+            Assert.That(Finite.All(goal), Is.True);
             Assert.That(goal.Equals(r), Is.True, "the rigid fallback returns R unchanged");
         }
 

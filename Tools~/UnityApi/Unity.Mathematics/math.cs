@@ -130,7 +130,6 @@ namespace Unity.Mathematics
             float rcpDet = 1.0f / csum(t0.zxy * m0);
             return new float3x3(m0, m1, m2) * rcpDet;
         }
-        public static bool3 isfinite(float3x3 m) => new bool3(all(isfinite(m.c0)), all(isfinite(m.c1)), all(isfinite(m.c2)));
 
         // ---- quaternion
         public static float dot(quaternion a, quaternion b) => dot(a.value, b.value);

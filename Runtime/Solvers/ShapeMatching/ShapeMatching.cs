@@ -1,0 +1,84 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Goal positions of meshless shape matching (Müller, Heidelberger, Teschner &amp; Gross 2005):
+    /// gᵢ = T (x⁰ᵢ − x⁰_cm) + x_cm, with T the rotation R of A_pq (§4.1) or the blend
+    /// β·Ã + (1 − β)·R of the volume-normalised linear transform Ã = A_pq A_qq⁻¹ / ∛det (§4.3).
+    /// Pure functions on spans; no allocation.
+    /// </summary>
+    public static class ShapeMatching
+    {
+        /// <summary>det A_qq relative to (tr A_qq / 3)³ below which the rest shape counts as planar.</summary>
+        public const float PlanarRestShapeThreshold = 1e-6f;
+
+        /// <summary>Mass-weighted centre Σ mᵢ xᵢ / Σ mᵢ (eq. 4 and 5). Returns zero for zero total mass.</summary>
+        public static float3 CenterOfMass(ReadOnlySpan<float3> x, ReadOnlySpan<float> mass)
+        {
+            float3 sum = float3.zero;
+            float m = 0f;
+            for (int i = 0; i < x.Length; i++)
+            {
+                sum += mass[i] * x[i];
+                m += mass[i];
+            }
+            return m > 0f ? sum / m : float3.zero;
+        }
+
+        /// <summary>Rest-shape data of a cluster: centre, mass and A_qq⁻¹ (eq. 7).</summary>
+        public static ClusterRestData ComputeRestData(ReadOnlySpan<float3> rest, ReadOnlySpan<float> mass)
+        {
+            var data = new ClusterRestData { RestCenter = CenterOfMass(rest, mass), AqqInverse = float3x3.identity };
+            float3x3 aqq = float3x3.zero;
+            for (int i = 0; i < rest.Length; i++)
+            {
+                float3 q = rest[i] - data.RestCenter;
+                aqq += mass[i] * OuterProduct(q, q);
+                data.TotalMass += mass[i];
+            }
+            float meanDiagonal = (aqq.c0.x + aqq.c1.y + aqq.c2.z) / 3f;
+            float det = math.determinant(aqq);
+            data.LinearValid = meanDiagonal > 0f
+                               && det > PlanarRestShapeThreshold * meanDiagonal * meanDiagonal * meanDiagonal;
+            if (data.LinearValid)
+                data.AqqInverse = math.inverse(aqq);
+            return data;
+        }
+
+        /// <summary>A_pq = Σ mᵢ pᵢ qᵢᵀ with pᵢ = xᵢ − x_cm and qᵢ = x⁰ᵢ − x⁰_cm (eq. 7).</summary>
+        public static float3x3 Apq(ReadOnlySpan<float3> x, ReadOnlySpan<float> mass, float3 center,
+            ReadOnlySpan<float3> rest, float3 restCenter)
+        {
+            float3x3 apq = float3x3.zero;
+            for (int i = 0; i < x.Length; i++)
+                apq += mass[i] * OuterProduct(x[i] - center, rest[i] - restCenter);
+            return apq;
+        }
+
+        /// <summary>
+        /// The goal transform T of a cluster (goals gᵢ = T qᵢ + x_cm). <paramref name="rotation"/> is
+        /// the warm start in and the extracted rotation out. <paramref name="rigidFallback"/> is set
+        /// when the linear mode had to use R (planar rest shape, or a degenerate or inverted Ã).
+        /// </summary>
+        public static float3x3 GoalTransform(in float3x3 apq, in ClusterRestData rest, ShapeMatchingMode mode, float beta,
+            ref quaternion rotation, out bool rigidFallback)
+        {
+            RotationExtraction.Extract(apq, ref rotation);
+            float3x3 r = new float3x3(rotation);
+            rigidFallback = false;
+            if (mode == ShapeMatchingMode.Rigid)
+                return r;
+            if (!rest.LinearValid)
+            {
+                rigidFallback = true;
+                return r;
+            }
+            float3x3 aLinear = math.mul(apq, rest.AqqInverse);
+            return VolumePreservation.LinearGoalTransform(aLinear, r, beta, out rigidFallback);
+        }
+
+        static float3x3 OuterProduct(float3 a, float3 b) => new float3x3(a * b.x, a * b.y, a * b.z);
+    }
+}
