@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.PackageLint
 
             List<string> imported = ImportedPaths(root).ToList();
             CheckMetaFiles(root, imported, fix);
-            Dictionary<string, string> guids = CheckGuids(root);
+            Dictionary<string, string> guids = CheckGuids(root, imported);
             CheckAsmdefs(root, imported, guids);
             CheckPackageJson(root);
             CheckSolverPurity(root);
@@ -112,11 +112,11 @@ namespace SoftBodyDynamics.PackageLint
 
         static readonly Regex s_GuidLine = new Regex(@"^guid: ([0-9a-f]{32})\s*$", RegexOptions.Multiline);
 
-        static Dictionary<string, string> CheckGuids(string root)
+        static Dictionary<string, string> CheckGuids(string root, List<string> imported)
         {
             var byGuid = new Dictionary<string, string>();
             var problems = new List<string>();
-            foreach (string rel in ImportedPaths(root))
+            foreach (string rel in imported)
             {
                 string meta = Path.Combine(root, rel + ".meta");
                 if (!File.Exists(meta)) continue;

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using System.Linq;
 using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
@@ -95,6 +94,12 @@ namespace SoftBodyDynamics.Runner
         public IReadOnlyList<Metric> Metrics;
         public double NsPerItem => MedianMs * 1e6 / Math.Max(1, ItemsPerStep);
         public double ItemsPerSecond => ItemsPerStep / (MedianMs * 1e-3);
-        public double MetricValue(string name) => Metrics.FirstOrDefault(m => m.Name == name).Value;
+        /// <summary>The named metric, or NaN when this scenario does not report it.</summary>
+        public double MetricValue(string name)
+        {
+            foreach (Metric m in Metrics)
+                if (m.Name == name) return m.Value;
+            return double.NaN;
+        }
     }
 }

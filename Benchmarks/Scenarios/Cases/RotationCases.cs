@@ -1,3 +1,4 @@
+using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
@@ -90,29 +91,24 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (kind == RotationCaseKind.FlattenedThroughMinus1em4) s.x = -1e-4f;
                 float3x3 f = math.mul(r, math.mul(new float3x3(s.x, 0, 0, 0, s.y, 0, 0, 0, s.z), math.transpose(w)));
 
-                a = float3x3.zero;
                 float3 plane = rng.NextFloat3Direction();
                 float3 line = rng.NextFloat3Direction();
-                float3 qs = default;
-                var qArr = new float3[PointsPerCluster];
-                var mArr = new float[PointsPerCluster];
-                float mSum = 0;
+                var rest = new float3[PointsPerCluster];
+                var deformed = new float3[PointsPerCluster];
+                var mass = new float[PointsPerCluster];
                 for (int i = 0; i < PointsPerCluster; i++)
                 {
                     float3 q = rng.NextFloat3(-1f, 1f);
                     if (kind == RotationCaseKind.Coplanar) q -= math.dot(q, plane) * plane;
                     if (kind == RotationCaseKind.Collinear) q = math.dot(q, line) * line;
                     if (kind == RotationCaseKind.Coincident) q = float3.zero;
-                    float m = rng.NextFloat(0.5f, 2f);
-                    qArr[i] = q * scale; mArr[i] = m; qs += m * q * scale; mSum += m;
+                    mass[i] = rng.NextFloat(0.5f, 2f);
+                    rest[i] = q * scale;
+                    deformed[i] = math.mul(f, rest[i]);
                 }
-                float3 qc = qs / mSum;
-                for (int i = 0; i < PointsPerCluster; i++)
-                {
-                    float3 q = qArr[i] - qc;          // rest offset from the centre of mass
-                    float3 p = math.mul(f, q);        // deformed offset
-                    a += mArr[i] * new float3x3(p * q.x, p * q.y, p * q.z); // m p qᵀ
-                }
+                // A = Σ mᵢ pᵢ qᵢᵀ exactly as shape matching forms it.
+                a = ShapeMatching.Apq(deformed, mass, ShapeMatching.CenterOfMass(deformed, mass),
+                    rest, ShapeMatching.CenterOfMass(rest, mass));
             }
 
             var reference = Svd3x3Double.Decompose(a);

@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
             var svd = Svd3x3Double.Decompose(ad);
             double sum = svd.SigmaSum;
-            e.ObjectiveGap = sum > 0 ? (svd.OptimalTrace - Svd3x3Double.Trace(r, ad)) / sum : 0.0;
+            e.ObjectiveGap = sum > 0 ? (svd.OptimalTrace - Svd3x3Double.Trace(rd, ad)) / sum : 0.0;
             return e;
         }
     }

@@ -92,9 +92,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>tr(Rᵀ A) in float64.</summary>
-        public static double Trace(in float3x3 r, double[,] a)
+        public static double Trace(double[,] rd, double[,] a)
         {
-            double[,] rd = ToDouble(r);
             double t = 0;
             for (int i = 0; i < 3; i++)
                 for (int k = 0; k < 3; k++)

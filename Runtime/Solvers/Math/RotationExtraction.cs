@@ -1,4 +1,3 @@
-using System.Runtime.CompilerServices;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Solvers
@@ -18,10 +17,11 @@ namespace SoftBodyDynamics.Solvers
     /// <list type="bullet">
     /// <item>A is divided by its largest entry first, so ε and the stopping test do not depend on
     /// the scale of the cluster (1e-4 m and 1e4 m behave alike).</item>
-    /// <item>After the iteration stops, the stationary point is checked for being the maximum: with
-    /// S = A Rᵀ symmetric and eigenvalues λ₁ ≥ λ₂ ≥ λ₃, R is the maximiser iff λ₂ + λ₃ ≥ 0. A saddle
-    /// (reached e.g. from a cold start on a symmetric inverted A, where ω is exactly zero) is left by
-    /// a half-turn about the eigenvector of λ₁, which raises tr(Rᵀ A) by −2(λ₂ + λ₃) &gt; 0.</item>
+    /// <item>Saddles are left by a half turn: with S = A Rᵀ and λ₁ ≥ λ₂ ≥ λ₃ the eigenvalues of
+    /// sym(S), a stationary R is the maximiser iff λ₂ + λ₃ ≥ 0; otherwise a half turn about the
+    /// eigenvector of λ₁ raises tr(Rᵀ A) by −2(λ₂ + λ₃) &gt; 0. It is taken during the iteration
+    /// wherever the curvature is negative, and once more after it stops, for the exact stationary
+    /// points where ω = 0 (e.g. a cold start on a symmetric inverted A).</item>
     /// </list>
     /// The result is always a unit quaternion, hence a proper rotation. A rank-0 or non-finite A
     /// leaves the warm start unchanged (or resets a non-finite warm start to identity).
@@ -49,7 +49,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Relative drop of tr(RᵀA) that triggers backtracking (≈ 80 ε of float32).</summary>
         const float k_TraceDropTolerance = 1e-5f;
 
-        /// <summary>Longest step per iteration, in radians (beyond it the quadratic model is not trusted).</summary>
+        /// <summary>Longest Newton/LM/Müller step per iteration, in radians (half turns excepted).</summary>
         const float k_MaxStepAngle = 1f;
 
         /// <summary>
@@ -63,22 +63,27 @@ namespace SoftBodyDynamics.Solvers
         public static int Extract(in float3x3 a, ref quaternion q, int maxIterations = DefaultMaxIterations,
             float tolerance = DefaultTolerance)
         {
-            if (!IsFinite(q.value) || math.lengthsq(q.value) < 1e-12f)
+            if (!Finite.All(q.value) || math.lengthsq(q.value) < 1e-12f)
                 q = quaternion.identity;
             else
                 q = math.normalize(q);
 
             if (!Finite.All(a))
                 return 0; // non-finite input: keep the (finite) warm start; callers detect and report bad state.
-            float scale = MaxAbs(a);
+            float scale = Matrix3.MaxAbs(a);
             if (!(scale > 0f))
                 return 0; // rank 0 (all particles coincide): no information, keep the warm start.
 
             float3x3 an = a * (1f / scale);
             int iterations = Iterate(an, ref q, maxIterations, tolerance);
 
-            if (EscapeSaddle(an, ref q))
+            // Final check for an exact saddle, where the iteration stopped because g = 0.
+            float3x3 s = math.mul(an, math.transpose(new float3x3(q)));
+            if (TryHalfTurnAxis(s, s.c0.x + s.c1.y + s.c2.z, out float3 axis))
+            {
+                q = math.normalize(math.mul(new quaternion(new float4(axis, 0f)), q)); // half turn: (axis, 0)
                 iterations += Iterate(an, ref q, maxIterations - iterations, tolerance);
+            }
             return iterations;
         }
 
@@ -91,13 +96,14 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Iterates q ← exp(θ) q on a normalised A until |θ| &lt; tolerance. The gradient of
+        /// Iterates q ← exp(θ) q on a normalised A until Müller's |ω| = |g| / |tr S| &lt; tolerance. The gradient of
         /// f(θ) = tr((exp([θ]) R)ᵀ A) is g = Σᵢ rᵢ × aᵢ (the numerator of Müller et al. 2016, eq. 7)
         /// and its Hessian is −H with H = tr(S)·I − sym(S), S = A Rᵀ (second-order expansion of
         /// exp([θ])). Where H is positive definite — always near a unique maximum — the Newton step
         /// θ = H⁻¹ g converges quadratically. Elsewhere (far from the optimum, or between a maximum and
         /// a saddle on inverted clusters) H is shifted to H + μI with μ making its smallest eigenvalue
-        /// δ·|tr S| (Levenberg–Marquardt), which still ascends and leaves flat regions quickly;
+        /// δ·|tr S| (Levenberg–Marquardt), which still ascends and leaves flat regions quickly, and where
+        /// H has clearly negative curvature the step is the half turn of <see cref="TryHalfTurnAxis"/>.
         /// Müller's eq. (7), θ = g / (|tr S| + ε), is the limit of a large shift and the last resort.
         /// </summary>
         static int Iterate(in float3x3 a, ref quaternion q, int maxIterations, float tolerance)
@@ -136,11 +142,6 @@ namespace SoftBodyDynamics.Solvers
                 float w = math.length(theta);
                 if (!(w > 0f))
                     return i;
-                if (w > k_MaxStepAngle && w < 3f) // half turns (w = π) pass uncapped
-                {
-                    theta *= k_MaxStepAngle / w;
-                    w = k_MaxStepAngle;
-                }
                 qPrev = q;
                 thetaPrev = theta;
                 tracePrev = trace;
@@ -149,7 +150,10 @@ namespace SoftBodyDynamics.Solvers
             return maxIterations;
         }
 
-        /// <summary>The ascent step θ for S = A Rᵀ, gradient g and trace tr S (see <c>Iterate</c>).</summary>
+        /// <summary>
+        /// The ascent step θ for S = A Rᵀ, gradient g and trace tr S (see <c>Iterate</c>): a half turn
+        /// (|θ| = π) or a Newton/LM/Müller step capped at <see cref="k_MaxStepAngle"/>.
+        /// </summary>
         static float3 Step(in float3x3 s, float3 g, float trace)
         {
             float t = math.abs(trace) + k_DenominatorEpsilon;
@@ -159,26 +163,43 @@ namespace SoftBodyDynamics.Solvers
             float h02 = -0.5f * (s.c2.x + s.c0.z);
             float h12 = -0.5f * (s.c2.y + s.c1.z);
             if (TrySolveSpd(h00, h11, h22, h01, h02, h12, g, k_NewtonMargin * t * t * t, out float3 theta))
-                return theta;
+                return CapStep(theta);
 
-            // eig(H) = tr S − eig(sym S), so λmin(H) = tr S − λ₁ with λ₁ = λmax(sym S).
-            float3x3 sym = 0.5f * (s + math.transpose(s));
-            float lambda1 = LargestEigenvalue(sym);
-            float lambdaMinH = trace - lambda1;
-            if (lambdaMinH < -k_HalfTurnMargin * t)
-            {
-                // Negative curvature: R sits on the wrong sheet (it would converge to a saddle).
-                // A half turn about the eigenvector v of λ₁ changes tr(RᵀA) to
-                // tr(S (2vvᵀ − I)) = 2λ₁ − tr S, a gain of −2 λmin(H) > 0, exactly.
-                float3 v = EigenvectorOf(sym, lambda1);
-                if (math.lengthsq(v) > 0f)
-                    return v * math.PI;
-            }
+            if (TryHalfTurnAxis(s, trace, out float3 axis, out float lambdaMinH))
+                return axis * math.PI;
             // Levenberg–Marquardt shift so that λmin(H + μI) = δ·|tr S|.
             float mu = math.max(0f, k_ShiftFraction * t - lambdaMinH);
             if (TrySolveSpd(h00 + mu, h11 + mu, h22 + mu, h01, h02, h12, g, 0f, out theta))
-                return theta;
-            return g * (1f / t); // Müller et al. 2016, eq. (7)
+                return CapStep(theta);
+            return CapStep(g * (1f / t)); // Müller et al. 2016, eq. (7)
+        }
+
+        /// <summary>Shortens a step longer than <see cref="k_MaxStepAngle"/> (beyond it the quadratic model is not trusted).</summary>
+        static float3 CapStep(float3 theta)
+        {
+            float w = math.length(theta);
+            return w > k_MaxStepAngle ? theta * (k_MaxStepAngle / w) : theta;
+        }
+
+        static bool TryHalfTurnAxis(in float3x3 s, float trace, out float3 axis) =>
+            TryHalfTurnAxis(s, trace, out axis, out _);
+
+        /// <summary>
+        /// Where tr(RᵀA) has negative curvature — λmin(H) = tr S − λ₁ &lt; −margin·|tr S|, with
+        /// eig(H) = tr S − eig(sym S) and λ₁ = λmax(sym S) — R sits on the wrong sheet and would
+        /// converge to a saddle. A half turn about the unit eigenvector v of λ₁ changes tr(RᵀA) to
+        /// tr(S (2vvᵀ − I)) = 2λ₁ − tr S, a gain of −2 λmin(H) &gt; 0, exactly. Returns that axis.
+        /// </summary>
+        static bool TryHalfTurnAxis(in float3x3 s, float trace, out float3 axis, out float lambdaMinH)
+        {
+            float3x3 sym = 0.5f * (s + math.transpose(s));
+            float lambda1 = LargestEigenvalue(sym);
+            lambdaMinH = trace - lambda1;
+            axis = float3.zero;
+            if (!(lambdaMinH < -k_HalfTurnMargin * (math.abs(trace) + k_DenominatorEpsilon)))
+                return false;
+            axis = EigenvectorOf(sym, lambda1);
+            return math.lengthsq(axis) > 0f;
         }
 
         /// <summary>Solves H θ = g for symmetric H when H is positive definite with det H &gt; minDet.</summary>
@@ -198,29 +219,6 @@ namespace SoftBodyDynamics.Solvers
             theta = new float3(c0 * g.x + c1 * g.y + c2 * g.z,
                                c1 * g.x + i11 * g.y + i12 * g.z,
                                c2 * g.x + i12 * g.y + m2 * g.z) * (1f / det);
-            return true;
-        }
-
-        /// <summary>
-        /// If R(q) is a stationary point of tr(Rᵀ A) that is not the maximum, rotates q by a half
-        /// turn about the dominant eigenvector of S = A Rᵀ and returns true.
-        /// </summary>
-        static bool EscapeSaddle(in float3x3 a, ref quaternion q)
-        {
-            float3x3 s = math.mul(a, math.transpose(new float3x3(q)));
-            // Symmetrise: at a stationary point S is symmetric up to the iteration residual.
-            float3x3 sym = 0.5f * (s + math.transpose(s));
-            float trace = sym.c0.x + sym.c1.y + sym.c2.z;
-            float lambda1 = LargestEigenvalue(sym);
-            // Maximum iff λ₂ + λ₃ = tr S − λ₁ ≥ 0. Keep a margin of float32 round-off (A is normalised).
-            if (trace - lambda1 >= -1e-5f)
-                return false;
-
-            float3 axis = EigenvectorOf(sym, lambda1);
-            if (math.lengthsq(axis) == 0f)
-                return false;
-            // Half turn about the axis: quaternion (axis, 0).
-            q = math.normalize(math.mul(new quaternion(new float4(axis, 0f)), q));
             return true;
         }
 
@@ -252,12 +250,5 @@ namespace SoftBodyDynamics.Solvers
             if (l2 > bestLen) { best = v2; bestLen = l2; }
             return bestLen > 0f ? best * math.rsqrt(bestLen) : float3.zero;
         }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static float MaxAbs(in float3x3 m) =>
-            math.max(math.cmax(math.abs(m.c0)), math.max(math.cmax(math.abs(m.c1)), math.cmax(math.abs(m.c2))));
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static bool IsFinite(float4 v) => math.all(math.isfinite(v));
     }
 }

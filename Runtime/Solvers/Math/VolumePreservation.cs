@@ -26,8 +26,10 @@ namespace SoftBodyDynamics.Solvers
             float relativeDeterminantFloor = DefaultRelativeDeterminantFloor)
         {
             normalized = float3x3.identity;
-            float scale = math.max(math.cmax(math.abs(a.c0)), math.max(math.cmax(math.abs(a.c1)), math.cmax(math.abs(a.c2))));
-            if (!(scale > 0f) || !math.isfinite(scale) || !Finite.All(a))
+            if (!Finite.All(a))
+                return false;
+            float scale = Matrix3.MaxAbs(a);
+            if (!(scale > 0f))
                 return false;
             // Normalise first so det cannot under- or overflow in float32.
             float3x3 an = a * (1f / scale);

@@ -35,7 +35,7 @@ namespace SoftBodyDynamics.Solvers
             for (int i = 0; i < rest.Length; i++)
             {
                 float3 q = rest[i] - data.RestCenter;
-                aqq += mass[i] * OuterProduct(q, q);
+                aqq += mass[i] * Matrix3.Outer(q, q);
                 data.TotalMass += mass[i];
             }
             float meanDiagonal = (aqq.c0.x + aqq.c1.y + aqq.c2.z) / 3f;
@@ -53,7 +53,7 @@ namespace SoftBodyDynamics.Solvers
         {
             float3x3 apq = float3x3.zero;
             for (int i = 0; i < x.Length; i++)
-                apq += mass[i] * OuterProduct(x[i] - center, rest[i] - restCenter);
+                apq += mass[i] * Matrix3.Outer(x[i] - center, rest[i] - restCenter);
             return apq;
         }
 
@@ -65,8 +65,7 @@ namespace SoftBodyDynamics.Solvers
         public static float3x3 GoalTransform(in float3x3 apq, in ClusterRestData rest, ShapeMatchingMode mode, float beta,
             ref quaternion rotation, out bool rigidFallback)
         {
-            RotationExtraction.Extract(apq, ref rotation);
-            float3x3 r = new float3x3(rotation);
+            float3x3 r = RotationExtraction.ExtractMatrix(apq, ref rotation);
             rigidFallback = false;
             if (mode == ShapeMatchingMode.Rigid)
                 return r;
@@ -78,7 +77,5 @@ namespace SoftBodyDynamics.Solvers
             float3x3 aLinear = math.mul(apq, rest.AqqInverse);
             return VolumePreservation.LinearGoalTransform(aLinear, r, beta, out rigidFallback);
         }
-
-        static float3x3 OuterProduct(float3 a, float3 b) => new float3x3(a * b.x, a * b.y, a * b.z);
     }
 }

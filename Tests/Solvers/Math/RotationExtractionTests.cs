@@ -141,7 +141,10 @@ namespace SoftBodyDynamics.Tests.Solvers
                     quaternion qs = quaternion.identity;
                     RotationExtraction.Extract(a * (scale * scale), ref qs, maxIterations: 100);
                     float angle = AngleBetween(q1, qs);
-                    Assert.That(angle, Is.LessThan(1e-3f), $"case {i}, scale {scale}");
+                    // Both runs stop at |ω| < 1e-6; the angle to the optimum is then ≲ 1e-6·κ with
+                    // κ = tr S / λmin(H) ≤ 7.7 for these 50 seeds (float64 SVD), so the two results differ
+                    // by ≲ 1.6e-5 rad to first order; 5e-5 leaves room for second-order terms and round-off.
+                    Assert.That(angle, Is.LessThan(5e-5f), $"case {i}, scale {scale}");
                 }
             }
         }

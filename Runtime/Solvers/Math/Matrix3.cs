@@ -1,0 +1,18 @@
+using System.Runtime.CompilerServices;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Small 3×3 helpers the solvers share.</summary>
+    public static class Matrix3
+    {
+        /// <summary>Outer product a bᵀ (column j is a·b_j).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float3x3 Outer(float3 a, float3 b) => new float3x3(a * b.x, a * b.y, a * b.z);
+
+        /// <summary>Largest absolute entry: the scale used to normalise a matrix before float32-sensitive work.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float MaxAbs(in float3x3 m) =>
+            math.max(math.cmax(math.abs(m.c0)), math.max(math.cmax(math.abs(m.c1)), math.cmax(math.abs(m.c2))));
+    }
+}
