@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Solvers
             return m > 0f ? sum / m : float3.zero;
         }
 
-        /// <summary>Rest-shape data of a cluster: centre, mass and A_qq⁻¹ (eq. 7).</summary>
+        /// <summary>Rest-shape data of a cluster: centre, mass, A_qq⁻¹ (eq. 7) and the length scale L. <see cref="ClusterRestData.QuadraticValid"/> is left false (see <see cref="QuadraticShapeMatching"/>).</summary>
         public static ClusterRestData ComputeRestData(ReadOnlySpan<float3> rest, ReadOnlySpan<float> mass)
         {
             var data = new ClusterRestData { RestCenter = CenterOfMass(rest, mass), AqqInverse = float3x3.identity };
@@ -38,13 +38,41 @@ namespace SoftBodyDynamics.Solvers
                 aqq += mass[i] * Matrix3.Outer(q, q);
                 data.TotalMass += mass[i];
             }
+            FinishRestData(ref data, aqq);
+            return data;
+        }
+
+        /// <summary>Rest data of the cluster <paramref name="indices"/> of <paramref name="rest"/> with one weight per member.</summary>
+        public static ClusterRestData ComputeRestData(ReadOnlySpan<float3> rest, ReadOnlySpan<int> indices, ReadOnlySpan<float> weights)
+        {
+            float3 sum = float3.zero;
+            float m = 0f;
+            for (int k = 0; k < indices.Length; k++)
+            {
+                sum += weights[k] * rest[indices[k]];
+                m += weights[k];
+            }
+            var data = new ClusterRestData { RestCenter = m > 0f ? sum / m : float3.zero, AqqInverse = float3x3.identity };
+            float3x3 aqq = float3x3.zero;
+            for (int k = 0; k < indices.Length; k++)
+            {
+                float3 q = rest[indices[k]] - data.RestCenter;
+                aqq += weights[k] * Matrix3.Outer(q, q);
+            }
+            data.TotalMass = m;
+            FinishRestData(ref data, aqq);
+            return data;
+        }
+
+        /// <summary>Sets L, the planar flag and A_qq⁻¹ from A_qq (and <see cref="ClusterRestData.TotalMass"/>).</summary>
+        public static void FinishRestData(ref ClusterRestData data, in float3x3 aqq)
+        {
             float meanDiagonal = (aqq.c0.x + aqq.c1.y + aqq.c2.z) / 3f;
+            data.LengthScale = data.TotalMass > 0f ? math.sqrt(3f * meanDiagonal / data.TotalMass) : 0f;
             float det = math.determinant(aqq);
             data.LinearValid = meanDiagonal > 0f
                                && det > PlanarRestShapeThreshold * meanDiagonal * meanDiagonal * meanDiagonal;
-            if (data.LinearValid)
-                data.AqqInverse = math.inverse(aqq);
-            return data;
+            data.AqqInverse = data.LinearValid ? math.inverse(aqq) : float3x3.identity;
         }
 
         /// <summary>A_pq = Σ mᵢ pᵢ qᵢᵀ with pᵢ = xᵢ − x_cm and qᵢ = x⁰ᵢ − x⁰_cm (eq. 7).</summary>

@@ -7,7 +7,7 @@ using System;
 namespace Unity.Mathematics
 {
     [Serializable]
-    public struct float3x3 : IEquatable<float3x3>
+    public partial struct float3x3 : IEquatable<float3x3>
     {
         public float3 c0, c1, c2;
         public static readonly float3x3 identity = new float3x3(1f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 1f);
@@ -63,7 +63,7 @@ namespace Unity.Mathematics
     }
 
     [Serializable]
-    public struct quaternion : IEquatable<quaternion>
+    public partial struct quaternion : IEquatable<quaternion>
     {
         public float4 value;
         public static readonly quaternion identity = new quaternion(0f, 0f, 0f, 1f);

@@ -6,7 +6,7 @@ using System;
 namespace Unity.Mathematics
 {
     [Serializable]
-    public struct Random
+    public partial struct Random
     {
         public uint state;
 

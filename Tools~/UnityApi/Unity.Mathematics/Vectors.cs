@@ -6,7 +6,7 @@ using System.Runtime.CompilerServices;
 namespace Unity.Mathematics
 {
     [Serializable]
-    public struct float2 : IEquatable<float2>
+    public partial struct float2 : IEquatable<float2>
     {
         public float x, y;
         public static readonly float2 zero;
@@ -25,7 +25,7 @@ namespace Unity.Mathematics
     }
 
     [Serializable]
-    public struct float3 : IEquatable<float3>, IFormattable
+    public partial struct float3 : IEquatable<float3>, IFormattable
     {
         public float x, y, z;
         public static readonly float3 zero;
@@ -72,7 +72,7 @@ namespace Unity.Mathematics
     }
 
     [Serializable]
-    public struct float4 : IEquatable<float4>
+    public partial struct float4 : IEquatable<float4>
     {
         public float x, y, z, w;
         public static readonly float4 zero;
@@ -95,7 +95,7 @@ namespace Unity.Mathematics
     }
 
     [Serializable]
-    public struct int3 : IEquatable<int3>
+    public partial struct int3 : IEquatable<int3>
     {
         public int x, y, z;
         public int3(int x, int y, int z) { this.x = x; this.y = y; this.z = z; }
@@ -108,14 +108,14 @@ namespace Unity.Mathematics
     }
 
     [Serializable]
-    public struct bool3
+    public partial struct bool3
     {
         public bool x, y, z;
         public bool3(bool x, bool y, bool z) { this.x = x; this.y = y; this.z = z; }
     }
 
     [Serializable]
-    public struct bool4
+    public partial struct bool4
     {
         public bool x, y, z, w;
         public bool4(bool x, bool y, bool z, bool w) { this.x = x; this.y = y; this.z = z; this.w = w; }

@@ -5,7 +5,7 @@ using System.Runtime.CompilerServices;
 
 namespace Unity.Mathematics
 {
-    public static class math
+    public static partial class math
     {
         public const float PI = 3.14159265358979323846f;
         public const float EPSILON = 1.1920928955078125e-7f;

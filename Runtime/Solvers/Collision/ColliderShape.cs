@@ -1,0 +1,48 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Primitive static collider kinds the particles collide with.</summary>
+    public enum ColliderShapeType : byte
+    {
+        /// <summary>Infinite plane; the solid is the half-space behind the normal.</summary>
+        Plane = 0,
+        /// <summary>Solid sphere.</summary>
+        Sphere = 1,
+        /// <summary>Solid oriented box.</summary>
+        Box = 2,
+        /// <summary>Solid capsule: all points within a radius of a segment.</summary>
+        Capsule = 3,
+    }
+
+    /// <summary>
+    /// A static primitive collider in world space (a component or a blob element in ECS). Build it
+    /// with the factory methods; the fields a kind does not use stay zero.
+    /// </summary>
+    public struct ColliderShape
+    {
+        public ColliderShapeType Type;
+        /// <summary>Plane: a point on it. Sphere and box: centre. Capsule: first end of the segment (m).</summary>
+        public float3 Center;
+        /// <summary>Plane: unit outward normal. Capsule: second end of the segment (m). Unused otherwise.</summary>
+        public float3 Axis;
+        /// <summary>Box orientation.</summary>
+        public quaternion Rotation;
+        /// <summary>Box half extents (m, all &gt; 0).</summary>
+        public float3 HalfExtents;
+        /// <summary>Sphere or capsule radius (m, &gt; 0).</summary>
+        public float Radius;
+
+        public static ColliderShape Plane(float3 point, float3 normal) => new ColliderShape
+            { Type = ColliderShapeType.Plane, Center = point, Axis = math.normalizesafe(normal, new float3(0f, 1f, 0f)), Rotation = quaternion.identity };
+
+        public static ColliderShape Sphere(float3 center, float radius) => new ColliderShape
+            { Type = ColliderShapeType.Sphere, Center = center, Radius = radius, Rotation = quaternion.identity };
+
+        public static ColliderShape Box(float3 center, quaternion rotation, float3 halfExtents) => new ColliderShape
+            { Type = ColliderShapeType.Box, Center = center, Rotation = math.normalizesafe(rotation), HalfExtents = halfExtents };
+
+        public static ColliderShape Capsule(float3 pointA, float3 pointB, float radius) => new ColliderShape
+            { Type = ColliderShapeType.Capsule, Center = pointA, Axis = pointB, Radius = radius, Rotation = quaternion.identity };
+    }
+}

@@ -1,0 +1,25 @@
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>What one call of <see cref="ShapeMatchingSolver.Step"/> did.</summary>
+    public struct ShapeMatchingStepReport
+    {
+        /// <summary>False when the body slept through the step.</summary>
+        public bool Stepped;
+        /// <summary>The body woke at the start of this step (force change, velocity, or a collider overlapping it).</summary>
+        public bool WokeUp;
+        /// <summary>The body fell asleep at the end of this step.</summary>
+        public bool FellAsleep;
+        /// <summary>The NaN guard found a non-finite or absurd state and reset the body to its rest shape.</summary>
+        public bool Reset;
+        /// <summary>Index of the first bad particle when <see cref="Reset"/> is true, else −1.</summary>
+        public int BadParticle;
+        /// <summary>Cluster solves of the last substep that used a fallback (rigid for linear, linear for quadratic).</summary>
+        public int Fallbacks;
+        /// <summary>Most rotation-extraction iterations any cluster needed during the step.</summary>
+        public int MaxRotationIterations;
+        /// <summary>Particle–collider contacts in the last substep.</summary>
+        public int Contacts;
+        /// <summary>Clusters whose rest shape flowed plastically during the step.</summary>
+        public int PlasticUpdates;
+    }
+}
