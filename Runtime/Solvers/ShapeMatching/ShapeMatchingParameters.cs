@@ -42,6 +42,35 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Rotation-extraction iterations per cluster and substep (warm-started).</summary>
         public int RotationIterations;
 
+        /// <summary>
+        /// A copy the step can trust: NaN or out-of-range values are replaced by the nearest valid value
+        /// (or the default where none is nearer). Authoring reports such values as errors before they get
+        /// here (<c>ShapeMatchingParameterValidation</c>); this only keeps the simulation from exploding.
+        /// </summary>
+        public ShapeMatchingParameters Sanitized()
+        {
+            var d = Default;
+            var p = this;
+            p.Stiffness = math.isnan(Stiffness) ? d.Stiffness : math.saturate(Stiffness);
+            p.Beta = math.isnan(Beta) ? d.Beta : math.saturate(Beta);
+            p.Damping = math.isfinite(Damping) ? math.max(0f, Damping) : d.Damping;
+            p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
+            p.Substeps = math.clamp(Substeps, 1, 64);
+            p.ParticleRadius = math.isfinite(ParticleRadius) ? math.max(0f, ParticleRadius) : d.ParticleRadius;
+            p.Friction = math.isfinite(Friction) ? math.max(0f, Friction) : d.Friction;
+            p.Restitution = math.isnan(Restitution) ? d.Restitution : math.saturate(Restitution);
+            bool plasticOk = math.isfinite(Plasticity.Yield) && math.isfinite(Plasticity.Creep) && math.isfinite(Plasticity.MaxDeformation)
+                             && Plasticity.Yield >= 0f && Plasticity.Creep >= 0f && Plasticity.MaxDeformation >= 0f;
+            p.Plasticity = plasticOk ? Plasticity : PlasticityParameters.None;
+            p.SleepSpeed = math.isfinite(SleepSpeed) ? math.max(0f, SleepSpeed) : d.SleepSpeed;
+            p.SleepDelay = math.isfinite(SleepDelay) ? math.max(0f, SleepDelay) : d.SleepDelay;
+            p.MaxSpeed = MaxSpeed > 0f && math.isfinite(MaxSpeed) ? MaxSpeed : d.MaxSpeed;
+            p.RotationIterations = math.clamp(RotationIterations, 1, 100);
+            if (Mode > ShapeMatchingMode.Quadratic)
+                p.Mode = d.Mode;
+            return p;
+        }
+
         /// <summary>A jelly-like default: linear mode, α = 0.2, β = 0.5, 4 substeps, Earth gravity.</summary>
         public static ShapeMatchingParameters Default => new ShapeMatchingParameters
         {

@@ -3,19 +3,207 @@ using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Solvers
 {
-    /// <summary>The shape-matching step (work in progress: signatures fixed).</summary>
+    /// <summary>
+    /// One step of a shape-matching body (Müller, Heidelberger, Teschner &amp; Gross 2005, §3.3 and §4),
+    /// split into substeps of h = dt / substeps, each:
+    /// <list type="number">
+    /// <item>predict: vᵢ += h·a, x*ᵢ = xᵢ + h·vᵢ;</item>
+    /// <item>solve: goals gᵢ from the clusters (<see cref="ClusterGoals"/>), x*ᵢ += α_sub (gᵢ − x*ᵢ) (eq. 3);</item>
+    /// <item>collide: x* pushed out of colliders with friction (<see cref="ContactProjection"/>);</item>
+    /// <item>update: vᵢ = (x*ᵢ − xᵢ)/h with restitution, xᵢ = x*ᵢ, then rigid-motion-preserving damping.</item>
+    /// </list>
+    /// Because goals are reached by a fraction α ≤ 1 of the way, there is no overshoot and the step is
+    /// unconditionally stable (§3.3). After the substeps a guard checks every particle: a non-finite
+    /// value, a speed above <see cref="ShapeMatchingParameters.MaxSpeed"/> or a position beyond
+    /// <see cref="PositionLimit"/> resets the body to its rest shape at its last good placement and is
+    /// reported. A body whose particles all stay slow sleeps until a force change, a velocity written
+    /// from outside or an overlapping collider wakes it.
+    /// The same function runs in the Burst jobs and in the .NET tests; it touches nothing but its arguments.
+    /// </summary>
     public static class ShapeMatchingSolver
     {
+        /// <summary>Largest accepted distance of a particle from the world origin (m).</summary>
+        public const float PositionLimit = 1e6f;
+
+        /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/>, rotated and moving uniformly.</summary>
         public static void Initialize(in ShapeMatchingModel model, in ShapeMatchingState state, float3 position,
             quaternion rotation, float3 velocity, out SoftBodyStatus status)
         {
-            status = default;
+            status = new SoftBodyStatus { Center = position, Rotation = math.normalizesafe(rotation) };
+            PlaceRestShape(model, state, status.Center, status.Rotation, velocity);
         }
 
+        /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
+        public static void Wake(ref SoftBodyStatus status)
+        {
+            status.Asleep = false;
+            status.StillTime = 0f;
+        }
+
+        /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment for the algorithm.</summary>
+        /// <param name="colliders">Static colliders in world space.</param>
         public static ShapeMatchingStepReport Step(in ShapeMatchingModel model, in ShapeMatchingParameters parameters,
             ReadOnlySpan<ColliderShape> colliders, float dt, in ShapeMatchingState state, ref SoftBodyStatus status)
         {
-            return default;
+            var report = new ShapeMatchingStepReport { BadParticle = -1 };
+            if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
+                return report;
+            ShapeMatchingParameters p = parameters.Sanitized();
+            if (status.Asleep)
+            {
+                if (!ShouldWake(model, p, colliders, state, status))
+                    return report;
+                Wake(ref status);
+                report.WokeUp = true;
+            }
+            report.Stepped = true;
+            status.LastAcceleration = p.Acceleration;
+
+            int substeps = p.Substeps;
+            float h = dt / substeps;
+            // α per substep so that (1 − α_sub)^substeps = 1 − α: the same stiffness for any substep count.
+            float alpha = p.Stiffness >= 1f ? 1f : 1f - math.pow(1f - p.Stiffness, 1f / substeps);
+            float damping = p.Damping > 0f ? 1f - math.exp(-p.Damping * h) : 0f;
+            // Resting contacts must not bounce: ignore approach speeds one substep of acceleration can produce.
+            float bounceThreshold = 2f * math.length(p.Acceleration) * h;
+            var x = state.Positions;
+            var v = state.Velocities;
+            var predicted = state.Predicted;
+
+            for (int s = 0; s < substeps; s++)
+            {
+                // Predict.
+                for (int i = 0; i < x.Length; i++)
+                {
+                    v[i] += h * p.Acceleration;
+                    predicted[i] = x[i] + h * v[i];
+                }
+                // Solve (eq. 3: x* += α (g − x*)); plastic flow once per step, on its last substep.
+                var counters = ClusterGoals.Compute(model, p, state, s == substeps - 1 ? dt : 0f);
+                for (int i = 0; i < x.Length; i++)
+                    if (model.InverseClusterCounts[i] > 0f)
+                        predicted[i] += alpha * (state.Goals[i] - predicted[i]);
+                report.MaxRotationIterations = math.max(report.MaxRotationIterations, counters.MaxIterations);
+                report.PlasticUpdates += counters.PlasticUpdates;
+                report.Fallbacks = counters.Fallbacks;
+                // Collide.
+                report.Contacts = colliders.Length > 0
+                    ? ContactProjection.Project(x, predicted, state.ContactNormals, colliders, p.ParticleRadius, p.Friction)
+                    : ClearContacts(state.ContactNormals);
+                // Update.
+                ContactProjection.UpdateVelocities(x, v, predicted, state.ContactNormals, h, p.Restitution, bounceThreshold);
+                if (damping > 0f)
+                    RigidMotionDamping.Apply(x, v, model.Masses, damping);
+            }
+
+            int bad = FindBadParticle(x, v, p.MaxSpeed, out float maxSpeedSq);
+            if (bad >= 0)
+            {
+                report.Reset = true;
+                report.BadParticle = bad;
+                status.ResetCount++;
+                if (!math.all(math.isfinite(status.Center)) || !Finite.All(status.Rotation.value))
+                {
+                    status.Center = float3.zero;
+                    status.Rotation = quaternion.identity;
+                }
+                PlaceRestShape(model, state, status.Center, status.Rotation, float3.zero);
+                status.StillTime = 0f;
+                status.StepCount++;
+                return report;
+            }
+
+            UpdatePlacement(model, x, ref status);
+            if (p.SleepSpeed > 0f && maxSpeedSq < p.SleepSpeed * p.SleepSpeed)
+            {
+                status.StillTime += dt;
+                if (status.StillTime >= p.SleepDelay)
+                {
+                    status.Asleep = true;
+                    report.FellAsleep = true;
+                    for (int i = 0; i < v.Length; i++)
+                        v[i] = float3.zero;
+                }
+            }
+            else
+            {
+                status.StillTime = 0f;
+            }
+            status.StepCount++;
+            return report;
+        }
+
+        /// <summary>
+        /// Rest shape placed at a centre and rotation, uniform velocity; clusters back to rest (Sₚ = I,
+        /// rotation = <paramref name="rotation"/>, the model's rest data and quadratic inverses).
+        /// </summary>
+        public static void PlaceRestShape(in ShapeMatchingModel model, in ShapeMatchingState state, float3 center,
+            quaternion rotation, float3 velocity)
+        {
+            float3x3 r = new float3x3(rotation);
+            for (int i = 0; i < model.ParticleCount; i++)
+            {
+                state.Positions[i] = center + math.mul(r, model.RestPositions[i] - model.BodyRest.RestCenter);
+                state.Velocities[i] = velocity;
+            }
+            for (int c = 0; c < model.ClusterCount; c++)
+                state.Clusters[c] = new ClusterState
+                    { Rotation = rotation, PlasticDeformation = float3x3.identity, Rest = model.ClusterRest[c] };
+            if (state.QuadraticInverse.Length == model.QuadraticInverse.Length)
+                model.QuadraticInverse.CopyTo(state.QuadraticInverse);
+        }
+
+        /// <summary>Centre of mass and best-fit rotation of the whole body (warm-started), the placement the guard resets to.</summary>
+        static void UpdatePlacement(in ShapeMatchingModel model, ReadOnlySpan<float3> x, ref SoftBodyStatus status)
+        {
+            float3 center = ShapeMatching.CenterOfMass(x, model.Masses);
+            float3x3 apq = float3x3.zero;
+            for (int i = 0; i < x.Length; i++)
+                apq += model.Masses[i] * Matrix3.Outer(x[i] - center, model.RestPositions[i] - model.BodyRest.RestCenter);
+            RotationExtraction.Extract(apq, ref status.Rotation);
+            status.Center = center;
+        }
+
+        /// <summary>First particle with a non-finite or absurd position or velocity, or −1; also the largest |v|².</summary>
+        static int FindBadParticle(ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, float maxSpeed, out float maxSpeedSq)
+        {
+            maxSpeedSq = 0f;
+            float speedLimitSq = maxSpeed * maxSpeed;
+            const float positionLimitSq = PositionLimit * PositionLimit;
+            for (int i = 0; i < x.Length; i++)
+            {
+                float s2 = math.lengthsq(v[i]);
+                // Written so that NaN fails every comparison and is caught.
+                if (!(s2 <= speedLimitSq) || !(math.lengthsq(x[i]) <= positionLimitSq))
+                    return i;
+                maxSpeedSq = math.max(maxSpeedSq, s2);
+            }
+            return -1;
+        }
+
+        static bool ShouldWake(in ShapeMatchingModel model, in ShapeMatchingParameters p, ReadOnlySpan<ColliderShape> colliders,
+            in ShapeMatchingState state, in SoftBodyStatus status)
+        {
+            if (math.any(p.Acceleration != status.LastAcceleration))
+                return true;
+            // A collider that moved into the body: deeper than a sliver of the particle radius.
+            float tolerance = 0.01f * p.ParticleRadius + 1e-6f;
+            for (int i = 0; i < state.Positions.Length; i++)
+            {
+                if (math.any(state.Velocities[i] != float3.zero) || !math.all(math.isfinite(state.Positions[i])))
+                    return true;
+                for (int c = 0; c < colliders.Length; c++)
+                    if (ParticleCollision.Penetration(colliders[c], state.Positions[i], p.ParticleRadius, out _, out float depth)
+                        && depth > tolerance)
+                        return true;
+            }
+            return false;
+        }
+
+        static int ClearContacts(Span<float3> normals)
+        {
+            normals.Clear();
+            return 0;
         }
     }
 }

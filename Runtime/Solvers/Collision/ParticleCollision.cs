@@ -1,0 +1,136 @@
+using System.Runtime.CompilerServices;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Particle (sphere of radius r) against a static primitive: penetration depth and the outward
+    /// normal to push along, and a swept test against planes and boxes so that a fast particle cannot
+    /// pass through them between two substeps. Boxes are inflated by r (flat faces, sharp edges).
+    /// </summary>
+    public static class ParticleCollision
+    {
+        static readonly float3 k_Up = new float3(0f, 1f, 0f);
+
+        /// <summary>
+        /// True when a particle at <paramref name="x"/> overlaps <paramref name="shape"/>; then
+        /// <paramref name="normal"/> is the unit direction to push it and <paramref name="depth"/> &gt; 0 how far (m).
+        /// </summary>
+        public static bool Penetration(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth)
+        {
+            switch (shape.Type)
+            {
+                case ColliderShapeType.Plane:
+                    normal = shape.Axis;
+                    depth = radius - math.dot(x - shape.Center, shape.Axis);
+                    return depth > 0f;
+                case ColliderShapeType.Sphere:
+                    return Round(x, shape.Center, shape.Radius + radius, out normal, out depth);
+                case ColliderShapeType.Capsule:
+                    return Round(x, ClosestOnSegment(x, shape.Center, shape.Axis), shape.Radius + radius, out normal, out depth);
+                case ColliderShapeType.Box:
+                    return Box(shape, x, radius, out normal, out depth);
+                default:
+                    normal = float3.zero;
+                    depth = 0f;
+                    return false;
+            }
+        }
+
+        /// <summary>
+        /// Swept test of the motion <paramref name="from"/> → <paramref name="to"/> against a plane or an
+        /// inflated box: true when the segment enters the solid, with the entry point and face normal.
+        /// Spheres and capsules are tested at the end point only (a substep must move less than their radius).
+        /// </summary>
+        public static bool Sweep(in ColliderShape shape, float3 from, float3 to, float radius, out float3 entry, out float3 normal)
+        {
+            entry = to;
+            normal = float3.zero;
+            if (shape.Type == ColliderShapeType.Plane)
+            {
+                float d0 = math.dot(from - shape.Center, shape.Axis) - radius;
+                float d1 = math.dot(to - shape.Center, shape.Axis) - radius;
+                if (!(d0 >= 0f && d1 < 0f))
+                    return false;
+                entry = math.lerp(from, to, d0 / (d0 - d1));
+                normal = shape.Axis;
+                return true;
+            }
+            if (shape.Type != ColliderShapeType.Box)
+                return false;
+            quaternion inverse = math.conjugate(shape.Rotation);
+            float3 a = math.rotate(inverse, from - shape.Center);
+            float3 b = math.rotate(inverse, to - shape.Center);
+            float3 extent = shape.HalfExtents + radius;
+            float3 d = b - a;
+            float tEnter = 0f, tExit = 1f;
+            int enterAxis = -1;
+            for (int axis = 0; axis < 3; axis++)
+            {
+                if (math.abs(d[axis]) < 1e-12f)
+                {
+                    if (math.abs(a[axis]) > extent[axis])
+                        return false;
+                    continue;
+                }
+                float inv = 1f / d[axis];
+                float t0 = (-extent[axis] - a[axis]) * inv, t1 = (extent[axis] - a[axis]) * inv;
+                if (t0 > t1) { float t = t0; t0 = t1; t1 = t; }
+                if (t0 > tEnter) { tEnter = t0; enterAxis = axis; }
+                tExit = math.min(tExit, t1);
+                if (tEnter > tExit)
+                    return false;
+            }
+            if (enterAxis < 0) // started inside: the discrete test handles it
+                return false;
+            float3 local = float3.zero;
+            local[enterAxis] = d[enterAxis] > 0f ? -1f : 1f;
+            normal = math.rotate(shape.Rotation, local);
+            entry = from + tEnter * (to - from);
+            return true;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static bool Round(float3 x, float3 center, float reach, out float3 normal, out float depth)
+        {
+            float3 r = x - center;
+            float d2 = math.lengthsq(r);
+            if (!(d2 < reach * reach))
+            {
+                normal = float3.zero;
+                depth = 0f;
+                return false;
+            }
+            float d = math.sqrt(d2);
+            normal = d > 1e-12f ? r / d : k_Up;
+            depth = reach - d;
+            return true;
+        }
+
+        /// <summary>Closest point to <paramref name="x"/> on the segment a–b.</summary>
+        public static float3 ClosestOnSegment(float3 x, float3 a, float3 b)
+        {
+            float3 ab = b - a;
+            float len2 = math.lengthsq(ab);
+            float t = len2 > 0f ? math.saturate(math.dot(x - a, ab) / len2) : 0f;
+            return a + t * ab;
+        }
+
+        static bool Box(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth)
+        {
+            float3 local = math.rotate(math.conjugate(shape.Rotation), x - shape.Center);
+            float3 gap = math.abs(local) - (shape.HalfExtents + radius); // < 0 on every axis = inside
+            normal = float3.zero;
+            depth = 0f;
+            if (!(gap.x < 0f && gap.y < 0f && gap.z < 0f))
+                return false;
+            // Leave through the nearest face.
+            int axis = gap.x > gap.y ? (gap.x > gap.z ? 0 : 2) : (gap.y > gap.z ? 1 : 2);
+            float3 n = float3.zero;
+            n[axis] = local[axis] >= 0f ? 1f : -1f;
+            normal = math.rotate(shape.Rotation, n);
+            depth = -gap[axis];
+            return true;
+        }
+    }
+}

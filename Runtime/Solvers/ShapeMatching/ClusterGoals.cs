@@ -1,0 +1,164 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The "solve" part of a substep: every cluster matches its rest shape to the predicted positions
+    /// and each particle's goal is the average of its clusters' goals (lattice shape matching, Rivers
+    /// &amp; James 2007, with weights wᵢ = mᵢ/nᵢ so that Σᵢ mᵢ(gᵢ − xᵢ) = 0 and momentum is conserved).
+    /// </summary>
+    public static class ClusterGoals
+    {
+        /// <summary>Fallbacks, rotation iterations and plastic updates of one pass.</summary>
+        public struct Counters
+        {
+            public int Fallbacks;
+            public int MaxIterations;
+            public int PlasticUpdates;
+        }
+
+        /// <summary>
+        /// Writes the averaged goal of every particle into <c>state.Goals</c> from <c>state.Predicted</c>
+        /// (particles in no cluster get their own position). When <paramref name="plasticStep"/> &gt; 0
+        /// the clusters also flow plastically over that time (s).
+        /// </summary>
+        public static Counters Compute(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
+            float plasticStep)
+        {
+            var counters = new Counters();
+            var x = state.Predicted;
+            var goals = state.Goals;
+            for (int i = 0; i < goals.Length; i++)
+                goals[i] = model.InverseClusterCounts[i] > 0f ? float3.zero : x[i];
+            bool plastic = plasticStep > 0f && p.Plasticity.Enabled;
+            bool quadraticReady = model.HasQuadratic;
+            var quadraticInverse = state.QuadraticInverse.Length == model.QuadraticInverse.Length
+                ? state.QuadraticInverse : default;
+            for (int c = 0; c < model.ClusterCount; c++)
+            {
+                ref ClusterState cluster = ref state.Clusters[c];
+                int start = model.ClusterOffsets[c], end = model.ClusterOffsets[c + 1];
+                float totalMass = cluster.Rest.TotalMass;
+                if (!(totalMass > 0f))
+                    continue;
+                // Eq. 4/5: weighted centre of the predicted positions.
+                float3 sum = float3.zero;
+                for (int k = start; k < end; k++)
+                    sum += model.ClusterWeights[k] * x[model.ClusterParticles[k]];
+                float3 center = sum / totalMass;
+                // Rest offsets are Sₚ qᵢ once the cluster has flowed (§4.5); skip the product while Sₚ = I.
+                float3x3 sp = cluster.PlasticDeformation;
+                bool usePlastic = !IsIdentity(sp);
+
+                bool quadratic = p.Mode == ShapeMatchingMode.Quadratic && quadraticReady && cluster.Rest.QuadraticValid
+                                 && (!usePlastic || quadraticInverse.Length > 0);
+                if (p.Mode == ShapeMatchingMode.Quadratic && !quadratic)
+                    counters.Fallbacks++;
+
+                float3x3 aLinear;
+                float3x3 r;
+                if (quadratic)
+                {
+                    QuadraticGoals(model, p, state, c, start, end, center, sp, usePlastic, ref cluster, quadraticInverse.Length > 0
+                        ? quadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster)
+                        : model.QuadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster),
+                        ref counters, out aLinear, out r);
+                }
+                else
+                {
+                    // Eq. 7: A_pq = Σ wᵢ pᵢ qᵢᵀ with qᵢ = Sₚ (x⁰ᵢ − x⁰_cm).
+                    float3x3 apq = float3x3.zero;
+                    for (int k = start; k < end; k++)
+                    {
+                        int i = model.ClusterParticles[k];
+                        float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
+                        if (usePlastic)
+                            q = math.mul(sp, q);
+                        apq += model.ClusterWeights[k] * Matrix3.Outer(x[i] - center, q);
+                    }
+                    int iterations = RotationExtraction.Extract(apq, ref cluster.Rotation, p.RotationIterations);
+                    counters.MaxIterations = math.max(counters.MaxIterations, iterations);
+                    r = new float3x3(cluster.Rotation);
+                    aLinear = cluster.Rest.LinearValid ? math.mul(apq, cluster.Rest.AqqInverse) : r;
+                    float3x3 t = r;
+                    if (p.Mode != ShapeMatchingMode.Rigid)
+                    {
+                        bool fallback = !cluster.Rest.LinearValid;
+                        if (!fallback)
+                            t = VolumePreservation.LinearGoalTransform(aLinear, r, p.Beta, out fallback);
+                        if (fallback && p.Mode == ShapeMatchingMode.Linear)
+                            counters.Fallbacks++;
+                    }
+                    // Eq. 9: gᵢ = T qᵢ + x_cm, averaged over the clusters of particle i.
+                    if (usePlastic)
+                        t = math.mul(t, sp);
+                    for (int k = start; k < end; k++)
+                    {
+                        int i = model.ClusterParticles[k];
+                        goals[i] += model.InverseClusterCounts[i] * (math.mul(t, model.RestPositions[i] - cluster.Rest.RestCenter) + center);
+                    }
+                }
+
+                if (plastic && cluster.Rest.LinearValid && model.ClusterRest[c].LinearValid
+                    && Plasticity.Update(ref cluster, aLinear, r, model.ClusterRest[c].AqqInverse, p.Plasticity, plasticStep))
+                {
+                    counters.PlasticUpdates++;
+                    if (quadratic && quadraticInverse.Length > 0)
+                    {
+                        var blocks = quadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster);
+                        cluster.Rest.QuadraticValid = QuadraticShapeMatching.ComputeRestInverse(model.RestPositions,
+                            model.ClusterParticles.Slice(start, end - start), model.ClusterWeights.Slice(start, end - start),
+                            cluster.Rest.RestCenter, cluster.PlasticDeformation, cluster.Rest.LengthScale, blocks, out _);
+                    }
+                }
+            }
+            return counters;
+        }
+
+        /// <summary>Eq. 11/12 in coordinates scaled by 1/L: gᵢ = x_cm + L (β Ã + (1 − β)[R 0 0]) q̃ᵢ.</summary>
+        static void QuadraticGoals(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
+            int c, int start, int end, float3 center, in float3x3 sp, bool usePlastic, ref ClusterState cluster,
+            System.ReadOnlySpan<float3x3> inverseBlocks, ref Counters counters, out float3x3 aLinear, out float3x3 r)
+        {
+            var x = state.Predicted;
+            float length = cluster.Rest.LengthScale;
+            float invL = 1f / length;
+            float3x3 p0 = float3x3.zero, p1 = float3x3.zero, p2 = float3x3.zero;
+            for (int k = start; k < end; k++)
+            {
+                int i = model.ClusterParticles[k];
+                float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
+                if (usePlastic)
+                    q = math.mul(sp, q);
+                QuadraticShapeMatching.Lift(q * invL, out float3 a, out float3 b, out float3 cr);
+                float3 wp = model.ClusterWeights[k] * invL * (x[i] - center);
+                p0 += Matrix3.Outer(wp, a);
+                p1 += Matrix3.Outer(wp, b);
+                p2 += Matrix3.Outer(wp, cr);
+            }
+            // p0 is A_pq / L²: same rotation.
+            int iterations = RotationExtraction.Extract(p0, ref cluster.Rotation, p.RotationIterations);
+            counters.MaxIterations = math.max(counters.MaxIterations, iterations);
+            r = new float3x3(cluster.Rotation);
+            aLinear = cluster.Rest.LinearValid ? math.mul(p0, cluster.Rest.AqqInverse) * (length * length) : r;
+            QuadraticShapeMatching.Transform(p0, p1, p2, inverseBlocks, out float3x3 t0, out float3x3 t1, out float3x3 t2);
+            float beta = math.saturate(p.Beta);
+            float3x3 g0 = beta * t0 + (1f - beta) * r, g1 = beta * t1, g2 = beta * t2;
+            var goals = state.Goals;
+            for (int k = start; k < end; k++)
+            {
+                int i = model.ClusterParticles[k];
+                float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
+                if (usePlastic)
+                    q = math.mul(sp, q);
+                QuadraticShapeMatching.Lift(q * invL, out float3 a, out float3 b, out float3 cr);
+                float3 g = center + length * (math.mul(g0, a) + math.mul(g1, b) + math.mul(g2, cr));
+                goals[i] += model.InverseClusterCounts[i] * g;
+            }
+        }
+
+        static bool IsIdentity(in float3x3 m) =>
+            m.c0.x == 1f && m.c1.y == 1f && m.c2.z == 1f && m.c0.y == 0f && m.c0.z == 0f
+            && m.c1.x == 0f && m.c1.z == 0f && m.c2.x == 0f && m.c2.y == 0f;
+    }
+}
