@@ -7,21 +7,28 @@ namespace SoftBodyDynamics.Solvers
     /// Contacts of one substep, position-based (Müller et al. 2007; friction after Macklin et al. 2014,
     /// eq. 24): predicted positions are pushed out of every collider, the tangential part of the
     /// substep's motion is cancelled up to μ times the penetration depth, and the normal velocity of
-    /// an approaching particle is set to −e times its pre-contact value when velocities are updated.
+    /// an approaching particle is set to −e times its pre-contact value.
     /// </summary>
     public static class ContactProjection
     {
         /// <summary>
-        /// Projects <paramref name="predicted"/> out of the colliders; writes each particle's contact
-        /// normal (zero when free) to <paramref name="contactNormals"/>. Returns the number of contacts.
+        /// Projects <paramref name="predicted"/> out of the colliders and adds each push to the velocity
+        /// (Δv = Δx/h); a particle that approached a surface at v⁻ₙ = v·n &lt; −<paramref name="bounceThreshold"/>
+        /// leaves it at −e·v⁻ₙ. Writes each particle's contact normal (zero when free) to
+        /// <paramref name="contactNormals"/>. Returns the number of particles in contact.
         /// </summary>
-        public static int Project(ReadOnlySpan<float3> previous, Span<float3> predicted, Span<float3> contactNormals,
-            ReadOnlySpan<ColliderShape> colliders, float radius, float friction)
+        /// <param name="previous">Positions at the start of the substep (for the swept test and friction).</param>
+        /// <param name="h">Substep (s).</param>
+        public static int Project(ReadOnlySpan<float3> previous, Span<float3> predicted, Span<float3> velocities,
+            Span<float3> contactNormals, ReadOnlySpan<ColliderShape> colliders, float radius, float friction, float h,
+            float restitution, float bounceThreshold)
         {
             int contacts = 0;
+            float invH = 1f / h;
             for (int i = 0; i < predicted.Length; i++)
             {
-                float3 x = predicted[i];
+                float3 start = predicted[i];
+                float3 x = start;
                 float3 contactNormal = float3.zero;
                 for (int c = 0; c < colliders.Length; c++)
                 {
@@ -44,36 +51,18 @@ namespace SoftBodyDynamics.Solvers
                         x -= tangential * math.min(1f, limit / slide);
                     contactNormal = n;
                 }
-                predicted[i] = x;
                 contactNormals[i] = contactNormal;
-                if (math.lengthsq(contactNormal) > 0f)
-                    contacts++;
+                if (math.lengthsq(contactNormal) == 0f)
+                    continue;
+                contacts++;
+                float approach = math.dot(velocities[i], contactNormal);
+                float3 v = velocities[i] + (x - start) * invH;
+                if (approach < -bounceThreshold)
+                    v += (-restitution * approach - math.dot(v, contactNormal)) * contactNormal;
+                velocities[i] = v;
+                predicted[i] = x;
             }
             return contacts;
-        }
-
-        /// <summary>
-        /// Velocity update vᵢ = (x*ᵢ − xᵢ)/h, then restitution: a particle in contact that approached at
-        /// v⁻ₙ = vᵢ⁻·n &lt; −<paramref name="bounceThreshold"/> leaves at −e·v⁻ₙ. Positions advance to x*.
-        /// </summary>
-        /// <param name="velocities">In: velocities before the substep's solve (after external forces). Out: new velocities.</param>
-        public static void UpdateVelocities(Span<float3> positions, Span<float3> velocities, ReadOnlySpan<float3> predicted,
-            ReadOnlySpan<float3> contactNormals, float h, float restitution, float bounceThreshold)
-        {
-            float invH = 1f / h;
-            for (int i = 0; i < positions.Length; i++)
-            {
-                float3 v = (predicted[i] - positions[i]) * invH;
-                float3 n = contactNormals[i];
-                if (math.lengthsq(n) > 0f)
-                {
-                    float approach = math.dot(velocities[i], n);
-                    if (approach < -bounceThreshold)
-                        v += (-restitution * approach - math.dot(v, n)) * n;
-                }
-                velocities[i] = v;
-                positions[i] = predicted[i];
-            }
         }
     }
 }

@@ -18,15 +18,14 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Writes the averaged goal of every particle into <c>state.Goals</c> from <c>state.Predicted</c>
+        /// Writes the averaged goal of every particle into <c>state.Goals</c> from the positions <paramref name="x"/>
         /// (particles in no cluster get their own position). When <paramref name="plasticStep"/> &gt; 0
         /// the clusters also flow plastically over that time (s).
         /// </summary>
         public static Counters Compute(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
-            float plasticStep)
+            System.ReadOnlySpan<float3> x, float plasticStep)
         {
             var counters = new Counters();
-            var x = state.Predicted;
             var goals = state.Goals;
             for (int i = 0; i < goals.Length; i++)
                 goals[i] = model.InverseClusterCounts[i] > 0f ? float3.zero : x[i];
@@ -59,7 +58,7 @@ namespace SoftBodyDynamics.Solvers
                 float3x3 r;
                 if (quadratic)
                 {
-                    QuadraticGoals(model, p, state, c, start, end, center, sp, usePlastic, ref cluster, quadraticInverse.Length > 0
+                    QuadraticGoals(model, p, state, x, c, start, end, center, sp, usePlastic, ref cluster, quadraticInverse.Length > 0
                         ? quadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster)
                         : model.QuadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster),
                         ref counters, out aLinear, out r);
@@ -108,19 +107,19 @@ namespace SoftBodyDynamics.Solvers
                         var blocks = quadraticInverse.Slice(c * QuadraticShapeMatching.BlocksPerCluster, QuadraticShapeMatching.BlocksPerCluster);
                         cluster.Rest.QuadraticValid = QuadraticShapeMatching.ComputeRestInverse(model.RestPositions,
                             model.ClusterParticles.Slice(start, end - start), model.ClusterWeights.Slice(start, end - start),
-                            cluster.Rest.RestCenter, cluster.PlasticDeformation, cluster.Rest.LengthScale, blocks, out _);
+                            cluster.Rest.RestCenter, cluster.PlasticDeformation, cluster.Rest.LengthScale, blocks, out _,
+                            out cluster.Rest.QuadraticMeanSquare, out cluster.Rest.QuadraticMeanCross);
                     }
                 }
             }
             return counters;
         }
 
-        /// <summary>Eq. 11/12 in coordinates scaled by 1/L: gᵢ = x_cm + L (β Ã + (1 − β)[R 0 0]) q̃ᵢ.</summary>
+        /// <summary>Eq. 11/12 in coordinates scaled by 1/L, with the centred q̃: gᵢ = x_cm + L (β Ã + (1 − β)[R 0 0]) q̃ᵢ.</summary>
         static void QuadraticGoals(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
-            int c, int start, int end, float3 center, in float3x3 sp, bool usePlastic, ref ClusterState cluster,
+            System.ReadOnlySpan<float3> x, int c, int start, int end, float3 center, in float3x3 sp, bool usePlastic, ref ClusterState cluster,
             System.ReadOnlySpan<float3x3> inverseBlocks, ref Counters counters, out float3x3 aLinear, out float3x3 r)
         {
-            var x = state.Predicted;
             float length = cluster.Rest.LengthScale;
             float invL = 1f / length;
             float3x3 p0 = float3x3.zero, p1 = float3x3.zero, p2 = float3x3.zero;
@@ -130,7 +129,7 @@ namespace SoftBodyDynamics.Solvers
                 float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
                 if (usePlastic)
                     q = math.mul(sp, q);
-                QuadraticShapeMatching.Lift(q * invL, out float3 a, out float3 b, out float3 cr);
+                QuadraticShapeMatching.Lift(q * invL, cluster.Rest, out float3 a, out float3 b, out float3 cr);
                 float3 wp = model.ClusterWeights[k] * invL * (x[i] - center);
                 p0 += Matrix3.Outer(wp, a);
                 p1 += Matrix3.Outer(wp, b);
@@ -151,7 +150,7 @@ namespace SoftBodyDynamics.Solvers
                 float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
                 if (usePlastic)
                     q = math.mul(sp, q);
-                QuadraticShapeMatching.Lift(q * invL, out float3 a, out float3 b, out float3 cr);
+                QuadraticShapeMatching.Lift(q * invL, cluster.Rest, out float3 a, out float3 b, out float3 cr);
                 float3 g = center + length * (math.mul(g0, a) + math.mul(g1, b) + math.mul(g2, cr));
                 goals[i] += model.InverseClusterCounts[i] * g;
             }

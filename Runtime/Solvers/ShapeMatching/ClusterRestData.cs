@@ -22,6 +22,10 @@ namespace SoftBodyDynamics.Solvers
         /// <see cref="QuadraticShapeMatching.MaxCondition"/>); otherwise the quadratic mode falls back to linear.
         /// </summary>
         public bool QuadraticValid;
+        /// <summary>Weighted mean of the squared part (qᵢ/L)∘(qᵢ/L) of q̃, subtracted so the quadratic basis is centred.</summary>
+        public float3 QuadraticMeanSquare;
+        /// <summary>Weighted mean of the cross part (qᵢ/L)∘(qᵢ/L).yzx of q̃, subtracted so the quadratic basis is centred.</summary>
+        public float3 QuadraticMeanCross;
         /// <summary>L = √(Σ wᵢ|qᵢ|² / Σ wᵢ), the RMS radius (m); the quadratic mode works in q/L so Ã_qq is scale-free.</summary>
         public float LengthScale;
     }

@@ -6,7 +6,10 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// Quadratic deformation mode of Müller et al. 2005, §4.4. Each rest offset q is lifted to
-    /// q̃ = (qx, qy, qz, qx², qy², qz², qx·qy, qy·qz, qz·qx) ∈ ℝ⁹, the best 3×9 transform is
+    /// q̃ = (qx, qy, qz, qx², qy², qz², qx·qy, qy·qz, qz·qx) ∈ ℝ⁹ minus its weighted mean (the paper's
+    /// q̃ is not centred: its squares have a positive mean, so the fit of the centred pᵢ cannot
+    /// reproduce even an exact quadratic deformation and the goals' centre drifts from x_cm; centred,
+    /// Σ wᵢ Ã q̃ᵢ = 0 and a quadratic deformation is matched exactly), the best 3×9 transform is
     /// Ã = Ã_pq Ã_qq⁻¹ with Ã_pq = Σ wᵢ pᵢ q̃ᵢᵀ and Ã_qq = Σ wᵢ q̃ᵢ q̃ᵢᵀ (eq. 11), and the goals are
     /// gᵢ = x_cm + (β Ã + (1 − β) [R 0 0]) q̃ᵢ (eq. 12).
     /// <para>Conditioning: q and p are divided by the cluster's RMS radius L before lifting, so the
@@ -27,19 +30,19 @@ namespace SoftBodyDynamics.Solvers
 
         const int k_JacobiSweeps = 60;
 
-        /// <summary>The three parts of q̃: (q, q∘q, q∘q.yzx).</summary>
+        /// <summary>The three parts of the centred q̃: (q, q∘q − mean, q∘q.yzx − mean), q already divided by L.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static void Lift(float3 q, out float3 linear, out float3 square, out float3 cross)
+        public static void Lift(float3 q, in ClusterRestData rest, out float3 linear, out float3 square, out float3 cross)
         {
             linear = q;
-            square = q * q;
-            cross = q * q.yzx;
+            square = q * q - rest.QuadraticMeanSquare;
+            cross = q * q.yzx - rest.QuadraticMeanCross;
         }
 
         /// <summary>
-        /// Computes the scaled Ã_qq⁻¹ of a cluster whose rest offsets are Sₚ (x⁰ᵢ − centre) / L, into
-        /// <paramref name="inverseBlocks"/> (9 blocks). Returns false (and writes zeros) when Ã_qq is
-        /// singular or its condition exceeds <see cref="MaxCondition"/>.
+        /// Computes the scaled, centred Ã_qq⁻¹ of a cluster whose rest offsets are Sₚ (x⁰ᵢ − centre) / L, into
+        /// <paramref name="inverseBlocks"/> (9 blocks), and the means of the quadratic parts. Returns false
+        /// (and writes zeros) when Ã_qq is singular or its condition exceeds <see cref="MaxCondition"/>.
         /// </summary>
         /// <param name="restPositions">All rest positions of the body (m).</param>
         /// <param name="indices">Members of the cluster (indices into <paramref name="restPositions"/>).</param>
@@ -50,25 +53,42 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="condition">λmax/λmin of the scaled Ã_qq (infinity when singular).</param>
         public static bool ComputeRestInverse(ReadOnlySpan<float3> restPositions, ReadOnlySpan<int> indices,
             ReadOnlySpan<float> weights, float3 restCenter, in float3x3 plasticDeformation, float lengthScale,
-            Span<float3x3> inverseBlocks, out double condition)
+            Span<float3x3> inverseBlocks, out double condition, out float3 meanSquare, out float3 meanCross)
         {
             Span<double> a = stackalloc double[81];
             Span<double> v = stackalloc double[81];
             Span<double> qt = stackalloc double[9];
             a.Clear();
             condition = double.PositiveInfinity;
+            meanSquare = float3.zero;
+            meanCross = float3.zero;
             for (int k = 0; k < BlocksPerCluster; k++)
                 inverseBlocks[k] = float3x3.zero;
             if (!(lengthScale > 0f) || !math.isfinite(lengthScale))
                 return false;
             double invL = 1.0 / lengthScale;
+            Span<double> mean = stackalloc double[9];
+            mean.Clear();
+            double totalWeight = 0.0;
             for (int m = 0; m < indices.Length; m++)
             {
-                float3 qf = math.mul(plasticDeformation, restPositions[indices[m]] - restCenter);
-                double x = qf.x * invL, y = qf.y * invL, z = qf.z * invL;
-                qt[0] = x; qt[1] = y; qt[2] = z;
-                qt[3] = x * x; qt[4] = y * y; qt[5] = z * z;
-                qt[6] = x * y; qt[7] = y * z; qt[8] = z * x;
+                LiftDouble(math.mul(plasticDeformation, restPositions[indices[m]] - restCenter), invL, qt);
+                for (int r = 3; r < 9; r++)
+                    mean[r] += weights[m] * qt[r];
+                totalWeight += weights[m];
+            }
+            if (!(totalWeight > 0.0))
+                return false;
+            for (int r = 3; r < 9; r++)
+                mean[r] /= totalWeight;
+            meanSquare = new float3((float)mean[3], (float)mean[4], (float)mean[5]);
+            meanCross = new float3((float)mean[6], (float)mean[7], (float)mean[8]);
+            for (int m = 0; m < indices.Length; m++)
+            {
+                LiftDouble(math.mul(plasticDeformation, restPositions[indices[m]] - restCenter), invL, qt);
+                // Centre with the float32 means the solver subtracts, so both see the same basis.
+                qt[3] -= meanSquare.x; qt[4] -= meanSquare.y; qt[5] -= meanSquare.z;
+                qt[6] -= meanCross.x; qt[7] -= meanCross.y; qt[8] -= meanCross.z;
                 double w = weights[m];
                 for (int r = 0; r < 9; r++)
                 for (int c = r; c < 9; c++)
@@ -111,6 +131,14 @@ namespace SoftBodyDynamics.Solvers
                 inverseBlocks[3 * bj + bk] = block;
             }
             return true;
+        }
+
+        static void LiftDouble(float3 q, double invL, Span<double> qt)
+        {
+            double x = q.x * invL, y = q.y * invL, z = q.z * invL;
+            qt[0] = x; qt[1] = y; qt[2] = z;
+            qt[3] = x * x; qt[4] = y * y; qt[5] = z * z;
+            qt[6] = x * y; qt[7] = y * z; qt[8] = z * x;
         }
 
         /// <summary>

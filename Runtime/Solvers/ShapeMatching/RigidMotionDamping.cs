@@ -10,8 +10,44 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public static class RigidMotionDamping
     {
+        /// <summary>
+        /// Adds the rigid spin δω × (xᵢ − x_cm) with I δω = <paramref name="angularMomentum"/> (I about the
+        /// centre of mass of <paramref name="x"/>): changes angular momentum by exactly that amount and
+        /// linear momentum not at all.
+        /// </summary>
+        public static void AddSpin(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float3 angularMomentum)
+        {
+            if (math.all(angularMomentum == float3.zero))
+                return;
+            float3 xcm = ShapeMatching.CenterOfMass(x, mass);
+            float3 omega = math.mul(InverseInertia(x, mass, xcm), angularMomentum);
+            if (!math.all(math.isfinite(omega)))
+                return;
+            for (int i = 0; i < x.Length; i++)
+                v[i] += math.cross(omega, x[i] - xcm);
+        }
+
+        /// <summary>
+        /// (I + 10⁻⁶ tr I · 1)⁻¹ about <paramref name="xcm"/>: a rod or a point has a singular inertia
+        /// tensor, and the tiny shift keeps ω finite. Zero for a body of zero extent.
+        /// </summary>
+        public static float3x3 InverseInertia(ReadOnlySpan<float3> x, ReadOnlySpan<float> mass, float3 xcm)
+        {
+            float3x3 inertia = float3x3.zero;
+            for (int i = 0; i < x.Length; i++)
+            {
+                float3 r = x[i] - xcm;
+                inertia += mass[i] * (math.lengthsq(r) * float3x3.identity - Matrix3.Outer(r, r));
+            }
+            float trace = inertia.c0.x + inertia.c1.y + inertia.c2.z;
+            if (!(trace > 0f))
+                return float3x3.zero;
+            return math.inverse(inertia + (1e-6f * trace) * float3x3.identity);
+        }
+
         /// <param name="k">Fraction of the non-rigid velocity removed, in [0, 1].</param>
-        public static void Apply(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float k)
+        /// <param name="scratch">One float3 per particle.</param>
+        public static void Apply(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float k, Span<float3> scratch)
         {
             float m = 0f;
             float3 xSum = float3.zero, vSum = float3.zero;
@@ -25,22 +61,22 @@ namespace SoftBodyDynamics.Solvers
                 return;
             float3 xcm = xSum / m, vcm = vSum / m;
             float3 l = float3.zero;
-            float3x3 inertia = float3x3.zero;
             for (int i = 0; i < x.Length; i++)
-            {
-                float3 r = x[i] - xcm;
-                l += mass[i] * math.cross(r, v[i] - vcm);
-                inertia += mass[i] * (math.lengthsq(r) * float3x3.identity - Matrix3.Outer(r, r));
-            }
-            // A rod or a point has a singular inertia tensor: regularise so ω stays finite.
-            float trace = inertia.c0.x + inertia.c1.y + inertia.c2.z;
-            float3 omega = float3.zero;
-            if (trace > 0f)
-                omega = math.mul(math.inverse(inertia + (1e-6f * trace) * float3x3.identity), l);
+                l += mass[i] * math.cross(x[i] - xcm, v[i] - vcm);
+            float3 omega = math.mul(InverseInertia(x, mass, xcm), l);
             if (!math.all(math.isfinite(omega)))
                 omega = float3.zero;
+            // Σ mᵢ Δvᵢ is zero in exact arithmetic; its float32 residual is removed so damping never
+            // pushes the body.
+            float3 residual = float3.zero;
             for (int i = 0; i < x.Length; i++)
-                v[i] += k * (vcm + math.cross(omega, x[i] - xcm) - v[i]);
+            {
+                scratch[i] = k * (vcm + math.cross(omega, x[i] - xcm) - v[i]);
+                residual += mass[i] * scratch[i];
+            }
+            residual /= m;
+            for (int i = 0; i < x.Length; i++)
+                v[i] += scratch[i] - residual;
         }
     }
 }

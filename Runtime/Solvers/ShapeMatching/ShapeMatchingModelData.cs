@@ -67,10 +67,13 @@ namespace SoftBodyDynamics.Solvers
                 var weights = new ReadOnlySpan<float>(data.ClusterWeights, start, count);
                 data.ClusterRest[c] = ShapeMatching.ComputeRestData(data.RestPositions, members, weights);
                 if (buildQuadratic)
-                    data.ClusterRest[c].QuadraticValid = QuadraticShapeMatching.ComputeRestInverse(data.RestPositions, members,
-                        weights, data.ClusterRest[c].RestCenter, float3x3.identity, data.ClusterRest[c].LengthScale,
+                {
+                    ref ClusterRestData rest = ref data.ClusterRest[c];
+                    rest.QuadraticValid = QuadraticShapeMatching.ComputeRestInverse(data.RestPositions, members,
+                        weights, rest.RestCenter, float3x3.identity, rest.LengthScale,
                         new Span<float3x3>(data.QuadraticInverse, c * QuadraticShapeMatching.BlocksPerCluster,
-                            QuadraticShapeMatching.BlocksPerCluster), out _);
+                            QuadraticShapeMatching.BlocksPerCluster), out _, out rest.QuadraticMeanSquare, out rest.QuadraticMeanCross);
+                }
             }
             data.BodyRest = ShapeMatching.ComputeRestData(restPositions, masses);
             return data;

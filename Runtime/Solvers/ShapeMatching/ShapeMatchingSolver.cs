@@ -8,9 +8,11 @@ namespace SoftBodyDynamics.Solvers
     /// split into substeps of h = dt / substeps, each:
     /// <list type="number">
     /// <item>predict: vᵢ += h·a, x*ᵢ = xᵢ + h·vᵢ;</item>
-    /// <item>solve: goals gᵢ from the clusters (<see cref="ClusterGoals"/>), x*ᵢ += α_sub (gᵢ − x*ᵢ) (eq. 3);</item>
-    /// <item>collide: x* pushed out of colliders with friction (<see cref="ContactProjection"/>);</item>
-    /// <item>update: vᵢ = (x*ᵢ − xᵢ)/h with restitution, xᵢ = x*ᵢ, then rigid-motion-preserving damping.</item>
+    /// <item>solve: goals gᵢ of the predicted positions from the clusters (<see cref="ClusterGoals"/>),
+    /// Δᵢ = α_sub (gᵢ − x*ᵢ) (eq. 3), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h (see <c>PullTowardGoals</c>);</item>
+    /// <item>collide: x* pushed out of colliders with friction, the push added to v (Δv = Δx/h),
+    /// restitution on the normal velocity (<see cref="ContactProjection"/>);</item>
+    /// <item>update: xᵢ = x*ᵢ, then rigid-motion-preserving damping.</item>
     /// </list>
     /// Because goals are reached by a fraction α ≤ 1 of the way, there is no overshoot and the step is
     /// unconditionally stable (§3.3). After the substeps a guard checks every particle: a non-finite
@@ -56,6 +58,13 @@ namespace SoftBodyDynamics.Solvers
                 Wake(ref status);
                 report.WokeUp = true;
             }
+            // Bad input (written from outside since the last step) is caught before it spreads, with its index.
+            int badInput = FindBadParticle(state.Positions, state.Velocities, p.MaxSpeed, out _);
+            if (badInput >= 0)
+            {
+                ResetToLastGoodPlacement(model, state, badInput, ref status, ref report);
+                return report;
+            }
             report.Stepped = true;
             status.LastAcceleration = p.Acceleration;
 
@@ -78,38 +87,26 @@ namespace SoftBodyDynamics.Solvers
                     v[i] += h * p.Acceleration;
                     predicted[i] = x[i] + h * v[i];
                 }
-                // Solve (eq. 3: x* += α (g − x*)); plastic flow once per step, on its last substep.
-                var counters = ClusterGoals.Compute(model, p, state, s == substeps - 1 ? dt : 0f);
-                for (int i = 0; i < x.Length; i++)
-                    if (model.InverseClusterCounts[i] > 0f)
-                        predicted[i] += alpha * (state.Goals[i] - predicted[i]);
+                // Solve: goals of the predicted positions; plastic flow once per step, on its last substep.
+                var counters = ClusterGoals.Compute(model, p, state, predicted, s == substeps - 1 ? dt : 0f);
+                PullTowardGoals(model, state, alpha, h);
                 report.MaxRotationIterations = math.max(report.MaxRotationIterations, counters.MaxIterations);
                 report.PlasticUpdates += counters.PlasticUpdates;
                 report.Fallbacks = counters.Fallbacks;
-                // Collide.
+                // Collide (positions and velocities), then update: xᵢ = x*ᵢ.
                 report.Contacts = colliders.Length > 0
-                    ? ContactProjection.Project(x, predicted, state.ContactNormals, colliders, p.ParticleRadius, p.Friction)
+                    ? ContactProjection.Project(x, predicted, v, state.ContactNormals, colliders, p.ParticleRadius, p.Friction,
+                        h, p.Restitution, bounceThreshold)
                     : ClearContacts(state.ContactNormals);
-                // Update.
-                ContactProjection.UpdateVelocities(x, v, predicted, state.ContactNormals, h, p.Restitution, bounceThreshold);
+                predicted.CopyTo(x);
                 if (damping > 0f)
-                    RigidMotionDamping.Apply(x, v, model.Masses, damping);
+                    RigidMotionDamping.Apply(x, v, model.Masses, damping, state.Goals);
             }
 
             int bad = FindBadParticle(x, v, p.MaxSpeed, out float maxSpeedSq);
             if (bad >= 0)
             {
-                report.Reset = true;
-                report.BadParticle = bad;
-                status.ResetCount++;
-                if (!math.all(math.isfinite(status.Center)) || !Finite.All(status.Rotation.value))
-                {
-                    status.Center = float3.zero;
-                    status.Rotation = quaternion.identity;
-                }
-                PlaceRestShape(model, state, status.Center, status.Rotation, float3.zero);
-                status.StillTime = 0f;
-                status.StepCount++;
+                ResetToLastGoodPlacement(model, state, bad, ref status, ref report);
                 return report;
             }
 
@@ -131,6 +128,75 @@ namespace SoftBodyDynamics.Solvers
             }
             status.StepCount++;
             return report;
+        }
+
+        /// <summary>
+        /// Eq. 3: Δᵢ = α (gᵢ − x*ᵢ), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h. Velocities change only by these small
+        /// increments (never as a difference of two positions), so float32 round-off of momentum stays
+        /// at the level of the increments. Shape matching is an internal force, so the pull must change
+        /// neither momentum nor angular momentum; two corrections make that hold in float32 too:
+        /// <list type="bullet">
+        /// <item>Σ mᵢ Δᵢ = 0 in exact arithmetic, but the float32 rest offsets do not sum to exactly zero
+        /// and that residual is the same every substep: the mass-weighted mean of Δ is removed.</item>
+        /// <item>The pull is torque-free about the predicted positions for an exact rotation, but angular
+        /// momentum is carried by xᵢ × vᵢ of the substep's start, which it changes by
+        /// Σ mᵢ xᵢ × Δᵢ / h = −Σ mᵢ vᵢ × Δᵢ + (rotation error)/h: O((hω)²) of the spin per substep, plus
+        /// the rotation's stopping tolerance amplified by 1/h. That amount is removed as a rigid spin
+        /// δω = −I⁻¹ Σ mᵢ xᵢ × Δᵢ / h, so a tumbling body keeps its angular momentum.</item>
+        /// </list>
+        /// </summary>
+        static void PullTowardGoals(in ShapeMatchingModel model, in ShapeMatchingState state, float alpha, float h)
+        {
+            var x = state.Positions;
+            var v = state.Velocities;
+            var goals = state.Goals;
+            var predicted = state.Predicted;
+            float3 drift = float3.zero;
+            float mass = 0f;
+            for (int i = 0; i < x.Length; i++)
+            {
+                if (!(model.InverseClusterCounts[i] > 0f))
+                    continue;
+                goals[i] -= predicted[i];
+                drift += model.Masses[i] * goals[i];
+                mass += model.Masses[i];
+            }
+            if (!(mass > 0f))
+                return;
+            drift /= mass;
+            float invH = 1f / h;
+            float3 origin = x[0];
+            float3 injected = float3.zero;
+            for (int i = 0; i < x.Length; i++)
+            {
+                if (!(model.InverseClusterCounts[i] > 0f))
+                    continue;
+                float3 delta = alpha * (goals[i] - drift);
+                injected += model.Masses[i] * math.cross(x[i] - origin, delta);
+                predicted[i] += delta;
+                v[i] += delta * invH;
+            }
+            RigidMotionDamping.AddSpin(x, v, model.Masses, -injected * invH);
+        }
+
+        /// <summary>The NaN guard's answer: rest shape at the last good centre and rotation, at rest, reported.</summary>
+        static void ResetToLastGoodPlacement(in ShapeMatchingModel model, in ShapeMatchingState state, int badParticle,
+            ref SoftBodyStatus status, ref ShapeMatchingStepReport report)
+        {
+            report.Reset = true;
+            report.BadParticle = badParticle;
+            status.ResetCount++;
+            if (!math.all(math.isfinite(status.Center)) || !(math.lengthsq(status.Center) <= PositionLimit * PositionLimit)
+                || !Finite.All(status.Rotation.value))
+            {
+                status.Center = float3.zero;
+                status.Rotation = quaternion.identity;
+            }
+            status.Rotation = math.normalizesafe(status.Rotation);
+            PlaceRestShape(model, state, status.Center, status.Rotation, float3.zero);
+            status.StillTime = 0f;
+            status.Asleep = false;
+            status.StepCount++;
         }
 
         /// <summary>

@@ -99,6 +99,10 @@ namespace Unity.Mathematics
     {
         public int x, y, z;
         public int3(int x, int y, int z) { this.x = x; this.y = y; this.z = z; }
+        /// <summary>All components set to <paramref name="v"/> (https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.int3.-ctor.html).</summary>
+        public int3(int v) { x = v; y = v; z = v; }
+        public static int3 operator *(int3 a, int b) => new int3(a.x * b, a.y * b, a.z * b);
+        public static int3 operator /(int3 a, int b) => new int3(a.x / b, a.y / b, a.z / b);
         public static int3 operator +(int3 a, int3 b) => new int3(a.x + b.x, a.y + b.y, a.z + b.z);
         public static int3 operator -(int3 a, int3 b) => new int3(a.x - b.x, a.y - b.y, a.z - b.z);
         public bool Equals(int3 o) => x == o.x && y == o.y && z == o.z;
