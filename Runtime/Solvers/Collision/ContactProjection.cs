@@ -34,13 +34,13 @@ namespace SoftBodyDynamics.Solvers
                 {
                     float3 n;
                     float depth;
-                    if (!ParticleCollision.Penetration(colliders[c], x, radius, out n, out depth))
-                    {
-                        if (!ParticleCollision.Sweep(colliders[c], previous[i], x, radius, out float3 entry, out n))
-                            continue;
-                        // Tunnelled through a thin box: push the end point back to the entry face.
+                    // A particle that came from outside leaves through the face it entered (a fast one may
+                    // be nearer the far face, or already through a thin box); one that started inside
+                    // leaves through the nearest face.
+                    if (ParticleCollision.Sweep(colliders[c], previous[i], x, radius, out float3 entry, out n))
                         depth = math.dot(entry - x, n);
-                    }
+                    else if (!ParticleCollision.Penetration(colliders[c], x, radius, out n, out depth))
+                        continue;
                     x += depth * n;
                     // Friction: cancel tangential motion of this substep, at most μ·depth.
                     float3 motion = x - previous[i];

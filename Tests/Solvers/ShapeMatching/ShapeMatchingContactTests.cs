@@ -1,0 +1,157 @@
+using NUnit.Framework;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>
+    /// Collisions. Contacts are resolved last in every substep, so at the end of a step every particle
+    /// is outside every collider up to the round-off of one projection (a few ulp of O(1) m coordinates):
+    /// 1e-5 m is asserted.
+    /// </summary>
+    public class ShapeMatchingContactTests
+    {
+        const float k_Tolerance = 1e-5f;
+
+        static ShapeMatchingInstance Cube(float3 position, float3 velocity, ShapeMatchingMode mode = ShapeMatchingMode.Linear)
+        {
+            var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f);
+            var p = ShapeMatchingParameters.Default;
+            p.Mode = mode;
+            return new ShapeMatchingInstance(model, p, position, quaternion.AxisAngle(math.normalize(new float3(1f, 0f, 1f)), 0.4f),
+                velocity);
+        }
+
+        /// <summary>
+        /// Dropped from the sample's heights (≤ 5 m, 10 m/s at impact) and thrown down at 30 m/s, a body
+        /// never ends a step inside the floor: the plane is a half-space, so no speed can skip it.
+        /// </summary>
+        [TestCase(5f, 0f)]
+        [TestCase(2f, -30f)]
+        public void DroppedBody_NeverTunnelsThroughFloor(float height, float downwardSpeed)
+        {
+            ShapeMatchingInstance body = Cube(new float3(0f, height, 0f), new float3(0f, downwardSpeed, 0f));
+            var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
+            float radius = body.Parameters.ParticleRadius;
+            for (int step = 0; step < 240; step++)
+            {
+                body.Step(1f / 60f, floor);
+                foreach (float3 x in body.Positions)
+                    Assert.That(x.y, Is.GreaterThanOrEqualTo(radius - k_Tolerance), $"step {step}");
+            }
+        }
+
+        /// <summary>
+        /// A 5 cm thick step hit at 30 m/s: 12.5 cm per substep, more than the inflated box is thick, so
+        /// only the swept test keeps the particles on top.
+        /// </summary>
+        [Test]
+        public void FastBody_NeverTunnelsThroughThinStep()
+        {
+            ShapeMatchingInstance body = Cube(new float3(0f, 1.5f, 0f), new float3(0f, -30f, 0f));
+            var step = new[] { ColliderShape.Box(new float3(0f, 0.5f, 0f), quaternion.identity, new float3(3f, 0.025f, 3f)) };
+            float top = 0.525f + body.Parameters.ParticleRadius;
+            for (int i = 0; i < 120; i++)
+            {
+                body.Step(1f / 60f, step);
+                foreach (float3 x in body.Positions)
+                    Assert.That(x.y, Is.GreaterThanOrEqualTo(top - k_Tolerance), $"step {i}");
+            }
+        }
+
+        [Test]
+        public void Particles_ArePushedOutOfEveryPrimitive()
+        {
+            float r = 0.02f;
+            var shapes = new[]
+            {
+                ColliderShape.Sphere(new float3(0f, 0f, 0f), 0.5f),
+                ColliderShape.Capsule(new float3(-0.5f, 0f, 0f), new float3(0.5f, 0f, 0f), 0.3f),
+                ColliderShape.Box(float3.zero, quaternion.AxisAngle(new float3(0f, 0f, 1f), 0.5f), new float3(0.4f, 0.2f, 0.3f)),
+                ColliderShape.Plane(new float3(0f, -0.1f, 0f), new float3(0f, 1f, 1f)),
+            };
+            var rng = new Random(3u);
+            foreach (ColliderShape shape in shapes)
+            {
+                for (int k = 0; k < 200; k++)
+                {
+                    float3 x = (rng.NextFloat3() - 0.5f) * 1.2f;
+                    if (!ParticleCollision.Penetration(shape, x, r, out float3 n, out float depth))
+                        continue;
+                    Assert.That(math.length(n), Is.EqualTo(1f).Within(1e-5f));
+                    Assert.That(depth, Is.GreaterThan(0f));
+                    float3 pushed = x + depth * n;
+                    Assert.That(ParticleCollision.Penetration(shape, pushed, r, out _, out float after) ? after : 0f,
+                        Is.LessThanOrEqualTo(k_Tolerance), $"{shape.Type} at {x}");
+                }
+            }
+        }
+
+        /// <summary>
+        /// On a 30° slope (tan 30° ≈ 0.58) a body with μ = 1 holds, one with μ = 0 slides. Position-based
+        /// friction cancels tangential motion up to μ × the penetration gravity causes each substep, so
+        /// the static limit is exactly tan θ &lt; μ. A stiff body (rigid goals, α = 1) keeps the test about
+        /// friction: a soft jelly shears under its weight and tumbles down even where it cannot slide.
+        /// </summary>
+        [Test]
+        public void Friction_HoldsOnSlopeBelowItsAngleAndSlidesWithout()
+        {
+            float3 normal = new float3(-0.5f, math.sqrt(3f) / 2f, 0f);
+            var slope = new[] { ColliderShape.Plane(float3.zero, normal) };
+            float Slide(float mu)
+            {
+                var model = LatticeBody.Create(new int3(4, 4, 4), 0.1f, 4, 1f);
+                var p = ShapeMatchingParameters.Default;
+                p.Mode = ShapeMatchingMode.Rigid;
+                p.Stiffness = 1f;
+                p.Friction = mu;
+                p.SleepSpeed = 0f;
+                quaternion tilt = quaternion.AxisAngle(new float3(0f, 0f, 1f), math.PI / 6f);
+                var body = new ShapeMatchingInstance(model, p, normal * 0.18f, tilt);
+                float3 start = body.Status.Center;
+                for (int step = 0; step < 120; step++)
+                    body.Step(1f / 60f, slope);
+                return math.length(body.Status.Center - start);
+            }
+            Assert.That(Slide(1f), Is.LessThan(0.02f));
+            Assert.That(Slide(0f), Is.GreaterThan(1f));
+        }
+
+        /// <summary>
+        /// A stiff body dropped flat from 1 m rebounds much higher with e = 0.8 than with e = 0. Only the
+        /// particles that touch the floor bounce; the others still fall until the goal pull turns them,
+        /// so a body's effective restitution is below e (free fall 0.83 m, e²·0.83 ≈ 0.53 m for a single
+        /// particle), and the body's own elasticity bounces it even with e = 0 (the squashed shape pushes
+        /// off the floor as it recovers): an ordering is asserted, not heights.
+        /// </summary>
+        [Test]
+        public void Restitution_OrdersReboundHeight()
+        {
+            float Rebound(float e)
+            {
+                var model = LatticeBody.Create(new int3(4, 4, 4), 0.1f, 4, 1f);
+                var p = ShapeMatchingParameters.Default;
+                p.Mode = ShapeMatchingMode.Rigid;
+                p.Stiffness = 1f;
+                p.Restitution = e;
+                p.Friction = 0f;
+                var body = new ShapeMatchingInstance(model, p, new float3(0f, 1f, 0f), quaternion.identity);
+                var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
+                float rest = 0.15f + p.ParticleRadius;
+                bool landed = false;
+                float highest = 0f;
+                for (int step = 0; step < 120; step++)
+                {
+                    ShapeMatchingStepReport r = body.Step(1f / 60f, floor);
+                    landed |= r.Contacts > 0;
+                    if (landed)
+                        highest = math.max(highest, body.Status.Center.y - rest);
+                }
+                return highest;
+            }
+            float bouncy = Rebound(0.8f), dead = Rebound(0f);
+            Assert.That(bouncy, Is.GreaterThan(dead + 0.05f));
+        }
+    }
+}
