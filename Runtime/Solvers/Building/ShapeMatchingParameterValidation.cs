@@ -1,0 +1,92 @@
+using System.Collections.Generic;
+using Unity.Mathematics;
+using static System.FormattableString;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Checks <see cref="ShapeMatchingParameters"/> for values the solver cannot use, with one issue per bad field.</summary>
+    public static class ShapeMatchingParameterValidation
+    {
+        /// <summary>Fewest and most substeps per step.</summary>
+        public const int MinSubsteps = 1, MaxSubsteps = 64;
+
+        /// <summary>Largest plausible particle radius (m); a larger one is nearly always a unit mistake.</summary>
+        public const float MaxParticleRadius = 100f;
+
+        /// <summary>Appends an issue for every bad field (an error, or a warning for stiffness 0); returns true when no error was added.</summary>
+        public static bool Validate(in ShapeMatchingParameters p, List<SoftBodyIssue> issues)
+        {
+            int errorsBefore = CountErrors(issues);
+
+            if ((uint)p.Mode > (uint)ShapeMatchingMode.Quadratic)
+                Error(issues, SoftBodyIssueCode.ModeInvalid, Invariant($"Mode is {(int)p.Mode}, which is not Rigid, Linear or Quadratic."));
+
+            if (Finite(issues, "Stiffness", p.Stiffness, "in [0, 1]"))
+            {
+                if (p.Stiffness < 0f || p.Stiffness > 1f)
+                    Error(issues, SoftBodyIssueCode.StiffnessOutOfRange, Invariant($"Stiffness is {p.Stiffness}; it must be in [0, 1] (1 = stiff, 0.05 = very soft)."));
+                else if (p.Stiffness == 0f)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.StiffnessZero, -1,
+                        "Stiffness is 0: the body will not hold its shape and collapses like loose particles. Use a value above 0 (0.05 = very soft)."));
+            }
+            if (Finite(issues, "Beta", p.Beta, "in [0, 1]") && (p.Beta < 0f || p.Beta > 1f))
+                Error(issues, SoftBodyIssueCode.BetaOutOfRange, Invariant($"Beta is {p.Beta}; it must be in [0, 1] (0 = rigid goals, 1 = fully deformable)."));
+            if (Finite(issues, "Damping", p.Damping, "of at least 0 1/s") && p.Damping < 0f)
+                Error(issues, SoftBodyIssueCode.DampingNegative, Invariant($"Damping is {p.Damping} 1/s; it must be at least 0 (negative damping adds energy)."));
+            Finite(issues, "Acceleration.x", p.Acceleration.x, "in m/s²");
+            Finite(issues, "Acceleration.y", p.Acceleration.y, "in m/s²");
+            Finite(issues, "Acceleration.z", p.Acceleration.z, "in m/s²");
+            if (p.Substeps < MinSubsteps || p.Substeps > MaxSubsteps)
+                Error(issues, SoftBodyIssueCode.SubstepsOutOfRange, Invariant($"Substeps is {p.Substeps}; it must be from {MinSubsteps} to {MaxSubsteps}."));
+            if (Finite(issues, "ParticleRadius", p.ParticleRadius, "in m") && (p.ParticleRadius <= 0f || p.ParticleRadius > MaxParticleRadius))
+                Error(issues, SoftBodyIssueCode.ParticleRadiusInvalid, Invariant(
+                    $"ParticleRadius is {p.ParticleRadius} m; it must be above 0 m and at most {MaxParticleRadius} m (check the units: metres)."));
+            if (Finite(issues, "Friction", p.Friction, "of at least 0") && p.Friction < 0f)
+                Error(issues, SoftBodyIssueCode.FrictionNegative, Invariant($"Friction is {p.Friction}; it must be at least 0 (0 = ice, 1 = rubber on concrete)."));
+            if (Finite(issues, "Restitution", p.Restitution, "in [0, 1]") && (p.Restitution < 0f || p.Restitution > 1f))
+                Error(issues, SoftBodyIssueCode.RestitutionOutOfRange, Invariant($"Restitution is {p.Restitution}; it must be in [0, 1] (0 = no bounce)."));
+            Plasticity(issues, "Plasticity.Yield", p.Plasticity.Yield);
+            Plasticity(issues, "Plasticity.Creep", p.Plasticity.Creep);
+            Plasticity(issues, "Plasticity.MaxDeformation", p.Plasticity.MaxDeformation);
+            if (Finite(issues, "SleepSpeed", p.SleepSpeed, "of at least 0 m/s") && p.SleepSpeed < 0f)
+                Error(issues, SoftBodyIssueCode.SleepSpeedNegative, Invariant($"SleepSpeed is {p.SleepSpeed} m/s; it must be at least 0 (0 = never sleeps)."));
+            if (Finite(issues, "SleepDelay", p.SleepDelay, "of at least 0 s") && p.SleepDelay < 0f)
+                Error(issues, SoftBodyIssueCode.SleepDelayNegative, Invariant($"SleepDelay is {p.SleepDelay} s; it must be at least 0 s."));
+            if (Finite(issues, "MaxSpeed", p.MaxSpeed, "above 0 m/s") && p.MaxSpeed <= 0f)
+                Error(issues, SoftBodyIssueCode.MaxSpeedNotPositive, Invariant($"MaxSpeed is {p.MaxSpeed} m/s; it must be above 0 (for example 500 m/s), or every step resets the body."));
+            if (p.RotationIterations < 1)
+                Error(issues, SoftBodyIssueCode.RotationIterationsInvalid, Invariant(
+                    $"RotationIterations is {p.RotationIterations}; it must be at least 1 (default {RotationExtraction.DefaultMaxIterations})."));
+
+            return CountErrors(issues) == errorsBefore;
+        }
+
+        /// <summary>Adds a <see cref="SoftBodyIssueCode.ParameterNotFinite"/> error and returns false when <paramref name="value"/> is NaN or infinite.</summary>
+        static bool Finite(List<SoftBodyIssue> issues, string field, float value, string expected)
+        {
+            if (math.isfinite(value))
+                return true;
+            string kind = math.isnan(value) ? "NaN" : "infinite";
+            Error(issues, SoftBodyIssueCode.ParameterNotFinite, Invariant($"{field} is {kind}; set a finite value {expected}."));
+            return false;
+        }
+
+        static void Plasticity(List<SoftBodyIssue> issues, string field, float value)
+        {
+            if (Finite(issues, field, value, "of at least 0") && value < 0f)
+                Error(issues, SoftBodyIssueCode.PlasticityNegative, Invariant($"{field} is {value}; it must be at least 0 (all plasticity fields 0 = elastic)."));
+        }
+
+        static void Error(List<SoftBodyIssue> issues, SoftBodyIssueCode code, string message) =>
+            issues.Add(SoftBodyIssue.Error(code, -1, message));
+
+        static int CountErrors(List<SoftBodyIssue> issues)
+        {
+            int count = 0;
+            foreach (SoftBodyIssue issue in issues)
+                if (issue.Severity == SoftBodyIssueSeverity.Error)
+                    count++;
+            return count;
+        }
+    }
+}

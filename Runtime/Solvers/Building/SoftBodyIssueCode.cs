@@ -1,0 +1,88 @@
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// One vocabulary for everything that can be wrong with a soft body's mesh, build settings or
+    /// solver parameters, shared by the pure builder, the Unity authoring and the editor. The values
+    /// are stable (they may be stored); new codes take new numbers.
+    /// </summary>
+    public enum SoftBodyIssueCode
+    {
+        // ---- mesh source (detected by the Unity-side authoring only)
+
+        /// <summary>No mesh is assigned.</summary>
+        NoMesh = 1,
+        /// <summary>The mesh's data is not readable on the CPU (Read/Write disabled in its import settings).</summary>
+        MeshNotReadable = 2,
+
+        // ---- mesh content
+
+        /// <summary>The mesh has no vertices or no triangles.</summary>
+        EmptyMesh = 10,
+        /// <summary>A vertex position is NaN or infinite. Index: the first such vertex.</summary>
+        NonFiniteVertex = 11,
+        /// <summary>The triangle index buffer's length is not a multiple of 3.</summary>
+        TriangleCountNotMultipleOfThree = 12,
+        /// <summary>A triangle refers to a vertex that does not exist. Index: the first such triangle.</summary>
+        TriangleIndexOutOfRange = 13,
+        /// <summary>All vertices coincide (zero-size bounds), or welding merged them all into one particle.</summary>
+        ZeroSize = 14,
+        /// <summary>Warning: triangles with zero area or a repeated vertex after welding. Index: the first such triangle.</summary>
+        DegenerateTriangles = 15,
+        /// <summary>Warning: edges shared by more than two triangles. Index: the first triangle using such an edge.</summary>
+        NonManifoldEdges = 16,
+        /// <summary>Warning: the mesh has boundary edges, so it has no inside; interior particles were skipped. Index: the first boundary triangle.</summary>
+        NotClosed = 17,
+        /// <summary>Warning: neighbouring triangles are wound in opposite senses, so inside and outside are undefined; interior particles were skipped. Index: the first such triangle.</summary>
+        InconsistentWinding = 18,
+
+        // ---- build settings
+
+        /// <summary>The relative or absolute weld tolerance is negative, NaN or infinite.</summary>
+        WeldToleranceInvalid = 30,
+        /// <summary>The total mass is zero, negative, NaN or infinite.</summary>
+        TotalMassNotPositive = 31,
+        /// <summary>The cluster size is negative, NaN, infinite, or so small that the cluster lattice cannot be indexed.</summary>
+        ClusterSizeInvalid = 32,
+        /// <summary>The interior spacing is negative, NaN, infinite, or so small that the lattice is unreasonably large.</summary>
+        InteriorSpacingInvalid = 33,
+        /// <summary>The particle limit is not positive.</summary>
+        MaxParticlesInvalid = 34,
+        /// <summary>The body would have more particles than the limit.</summary>
+        TooManyParticles = 35,
+        /// <summary>Warning: clusters with fewer than 4 particles or a planar rest shape had to be kept, because they alone cover some particles.</summary>
+        WeakClusters = 36,
+
+        // ---- shape-matching parameters
+
+        /// <summary>A parameter is NaN or infinite.</summary>
+        ParameterNotFinite = 60,
+        /// <summary>The shape-matching mode is not one of the defined values.</summary>
+        ModeInvalid = 61,
+        /// <summary>Stiffness α outside [0, 1].</summary>
+        StiffnessOutOfRange = 62,
+        /// <summary>Warning: stiffness α = 0, so the body will not hold its shape.</summary>
+        StiffnessZero = 63,
+        /// <summary>β outside [0, 1].</summary>
+        BetaOutOfRange = 64,
+        /// <summary>Damping below 0.</summary>
+        DampingNegative = 65,
+        /// <summary>Substeps outside 1..64.</summary>
+        SubstepsOutOfRange = 66,
+        /// <summary>Particle radius not positive, or implausibly large.</summary>
+        ParticleRadiusInvalid = 67,
+        /// <summary>Friction below 0.</summary>
+        FrictionNegative = 68,
+        /// <summary>Restitution outside [0, 1].</summary>
+        RestitutionOutOfRange = 69,
+        /// <summary>A plasticity field (yield, creep, maximum deformation) below 0.</summary>
+        PlasticityNegative = 70,
+        /// <summary>Sleep speed below 0.</summary>
+        SleepSpeedNegative = 71,
+        /// <summary>Sleep delay below 0.</summary>
+        SleepDelayNegative = 72,
+        /// <summary>Maximum speed not positive.</summary>
+        MaxSpeedNotPositive = 73,
+        /// <summary>Rotation iterations below 1.</summary>
+        RotationIterationsInvalid = 74,
+    }
+}
