@@ -10,8 +10,6 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public static class ParticleCollision
     {
-        static readonly float3 k_Up = new float3(0f, 1f, 0f);
-
         /// <summary>
         /// True when a particle at <paramref name="x"/> overlaps <paramref name="shape"/>; then
         /// <paramref name="normal"/> is the unit direction to push it and <paramref name="depth"/> &gt; 0 how far (m).
@@ -102,7 +100,7 @@ namespace SoftBodyDynamics.Solvers
                 return false;
             }
             float d = math.sqrt(d2);
-            normal = d > 1e-12f ? r / d : k_Up;
+            normal = d > 1e-12f ? r / d : new float3(0f, 1f, 0f); // at the centre: push up
             depth = reach - d;
             return true;
         }
