@@ -1,0 +1,13 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Entities;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>Runtime state of one shape-matching cluster (rotation warm start, plastic deformation, rest data in use).</summary>
+    [InternalBufferCapacity(0)]
+    public struct SoftBodyCluster : IBufferElementData
+    {
+        /// <summary>The cluster state.</summary>
+        public ClusterState Value;
+    }
+}

@@ -1,0 +1,36 @@
+using System;
+using SoftBodyDynamics.Solvers;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>Span views of a body's buffers and scratch, as the solver takes them (no copies).</summary>
+    static class SoftBodyBuffers
+    {
+        /// <summary>Scratch floats3 per particle the step needs: predicted positions, goals, contact normals.</summary>
+        public const int ScratchPerParticle = 3;
+
+        public static Span<float3> AsSpan(DynamicBuffer<SoftBodyPosition> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
+
+        public static Span<float3> AsSpan(DynamicBuffer<SoftBodyVelocity> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
+
+        public static Span<ClusterState> AsSpan(DynamicBuffer<SoftBodyCluster> buffer) => buffer.Reinterpret<ClusterState>().AsNativeArray().AsSpan();
+
+        public static Span<float3x3> AsSpan(DynamicBuffer<SoftBodyQuadraticInverse> buffer) => buffer.Reinterpret<float3x3>().AsNativeArray().AsSpan();
+
+        /// <summary>
+        /// The solver state over the buffers and a scratch array of <see cref="ScratchPerParticle"/> × particles
+        /// (allocate it with <see cref="Allocator.Temp"/> inside the job).
+        /// </summary>
+        public static ShapeMatchingState State(DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
+            DynamicBuffer<SoftBodyCluster> clusters, Span<float3x3> quadraticInverse, NativeArray<float3> scratch)
+        {
+            int n = positions.Length;
+            Span<float3> s = scratch.AsSpan();
+            return new ShapeMatchingState(AsSpan(positions), AsSpan(velocities), AsSpan(clusters), quadraticInverse,
+                s.Slice(0, n), s.Slice(n, n), s.Slice(2 * n, n));
+        }
+    }
+}

@@ -1,0 +1,68 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Burst;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+using Unity.Transforms;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Places new soft bodies: for every body with <see cref="SoftBodyUninitialized"/> enabled it sizes the
+    /// particle and cluster buffers, puts the rest shape at the entity's <see cref="LocalTransform"/> (mesh
+    /// origin; scale reset to 1) at rest with <see cref="ShapeMatchingSolver.Initialize"/>, and disables the
+    /// tag. Runs first in the fixed step, so prefabs instantiated at any time start where they were placed.
+    /// </summary>
+    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateBefore(typeof(SoftBodySimulationSystem))]
+    [BurstCompile]
+    public partial struct SoftBodyInitializationSystem : ISystem
+    {
+        [BurstCompile]
+        public void OnCreate(ref SystemState state)
+        {
+            state.RequireForUpdate<SoftBodyUninitialized>();
+        }
+
+        [BurstCompile]
+        public void OnUpdate(ref SystemState state)
+        {
+            new InitializeJob { QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>() }.ScheduleParallel();
+        }
+
+        [BurstCompile]
+        partial struct InitializeJob : IJobEntity
+        {
+            /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
+            [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
+
+            void Execute(Entity entity, in SoftBodyShape shape, ref LocalTransform transform, ref SoftBodyState body,
+                DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
+                DynamicBuffer<SoftBodyCluster> clusters, EnabledRefRW<SoftBodyUninitialized> uninitialized)
+            {
+                ref SoftBodyShapeBlob blob = ref shape.Blob.Value;
+                int n = blob.ParticleCount;
+                positions.ResizeUninitialized(n);
+                velocities.ResizeUninitialized(n);
+                clusters.ResizeUninitialized(blob.ClusterCount);
+                var quadratic = default(System.Span<float3x3>);
+                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<SoftBodyQuadraticInverse> perInstance))
+                {
+                    perInstance.ResizeUninitialized(blob.QuadraticInverse.Length);
+                    quadratic = SoftBodyBuffers.AsSpan(perInstance);
+                }
+
+                var scratch = new NativeArray<float3>(SoftBodyBuffers.ScratchPerParticle * n, Allocator.Temp,
+                    NativeArrayOptions.UninitializedMemory);
+                var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
+                quaternion rotation = math.normalizesafe(transform.Rotation);
+                transform = LocalTransform.FromPositionRotation(transform.Position, rotation);
+                ShapeMatchingSolver.Initialize(blob.AsModel(), solverState,
+                    SoftBodyPlacement.CenterOfMass(transform, blob.BodyRest.RestCenter), rotation, float3.zero, out body.Status);
+                body.LastReport = new ShapeMatchingStepReport { BadParticle = -1 };
+                scratch.Dispose();
+                uninitialized.ValueRW = false;
+            }
+        }
+    }
+}

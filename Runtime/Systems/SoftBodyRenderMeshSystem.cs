@@ -1,0 +1,114 @@
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Rendering;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Owns the per-body render meshes. A rendered soft body (<see cref="SoftBodyRenderMesh"/> plus Entities
+    /// Graphics' <c>MaterialMeshInfo</c> and <c>RenderBounds</c>) gets its own deformable copy of the mesh
+    /// (<see cref="SoftBodyMeshInstancing"/>), registered with <c>EntitiesGraphicsSystem.RegisterMesh</c> and
+    /// set as the entity's runtime mesh; <see cref="SoftBodyMeshInstance"/> and a
+    /// <see cref="SoftBodyMeshVertex"/> buffer are added. When the body is destroyed the mesh is unregistered
+    /// and destroyed. Does nothing in worlds without Entities Graphics. Main thread (managed meshes);
+    /// structural changes only when bodies appear or disappear.
+    /// </summary>
+    [UpdateInGroup(typeof(StructuralChangePresentationSystemGroup))]
+    public partial struct SoftBodyRenderMeshSystem : ISystem
+    {
+        EntityQuery m_NeedInstance;
+        EntityQuery m_Orphaned;
+        EntityQuery m_AllInstances;
+
+        public void OnCreate(ref SystemState state)
+        {
+            m_NeedInstance = SystemAPI.QueryBuilder()
+                .WithAll<SoftBodyRenderMesh, SoftBodyShape>()
+                .WithPresent<MaterialMeshInfo>()
+                .WithAll<RenderBounds>()
+                .WithNone<SoftBodyMeshInstance>()
+                .Build();
+            m_Orphaned = SystemAPI.QueryBuilder().WithAll<SoftBodyMeshInstance>().WithNone<SoftBodyRenderMesh>().Build();
+            m_AllInstances = SystemAPI.QueryBuilder().WithAll<SoftBodyMeshInstance>().Build();
+            state.RequireAnyForUpdate(m_NeedInstance, m_Orphaned);
+        }
+
+        public void OnUpdate(ref SystemState state)
+        {
+            EntityManager entityManager = state.EntityManager;
+            var graphics = state.World.GetExistingSystemManaged<EntitiesGraphicsSystem>();
+            ReleaseOrphans(entityManager, graphics);
+            if (graphics != null)
+                CreateInstances(entityManager, graphics);
+        }
+
+        public void OnDestroy(ref SystemState state)
+        {
+            // The world is going away: free the meshes (their registrations go with Entities Graphics).
+            NativeArray<SoftBodyMeshInstance> instances = m_AllInstances.ToComponentDataArray<SoftBodyMeshInstance>(Allocator.Temp);
+            foreach (SoftBodyMeshInstance instance in instances)
+                SoftBodyMeshInstancing.Destroy(instance.Mesh.Value);
+            instances.Dispose();
+        }
+
+        void ReleaseOrphans(EntityManager entityManager, EntitiesGraphicsSystem graphics)
+        {
+            if (m_Orphaned.IsEmpty)
+                return;
+            NativeArray<Entity> orphans = m_Orphaned.ToEntityArray(Allocator.Temp);
+            foreach (Entity entity in orphans)
+            {
+                SoftBodyMeshInstance instance = entityManager.GetComponentData<SoftBodyMeshInstance>(entity);
+                if (graphics != null && !instance.MeshId.Equals(BatchMeshID.Null))
+                    graphics.UnregisterMesh(instance.MeshId);
+                SoftBodyMeshInstancing.Destroy(instance.Mesh.Value);
+                entityManager.RemoveComponent<SoftBodyMeshInstance>(entity);
+                if (entityManager.Exists(entity) && entityManager.HasBuffer<SoftBodyMeshVertex>(entity))
+                    entityManager.RemoveComponent<SoftBodyMeshVertex>(entity);
+            }
+            orphans.Dispose();
+        }
+
+        void CreateInstances(EntityManager entityManager, EntitiesGraphicsSystem graphics)
+        {
+            if (m_NeedInstance.IsEmpty)
+                return;
+            NativeArray<Entity> entities = m_NeedInstance.ToEntityArray(Allocator.Temp);
+            foreach (Entity entity in entities)
+            {
+                Mesh source = entityManager.GetComponentData<SoftBodyRenderMesh>(entity).Mesh.Value;
+                int vertexCount = entityManager.GetComponentData<SoftBodyShape>(entity).Blob.Value.VertexCount;
+                MaterialMeshInfo materialMesh = entityManager.GetComponentData<MaterialMeshInfo>(entity);
+                var instance = new SoftBodyMeshInstance { MeshId = BatchMeshID.Null };
+
+                Mesh copy = null;
+                string error;
+                if (materialMesh.HasMaterialMeshIndexRange)
+                    error = "it is rendered with several materials; soft-body meshes support one material";
+                else
+                    copy = SoftBodyMeshInstancing.CreateDeformableCopy(source, vertexCount, out error);
+                if (copy != null)
+                {
+                    instance.Mesh = copy;
+                    instance.MeshId = graphics.RegisterMesh(copy);
+                    materialMesh.MeshID = instance.MeshId;
+                    entityManager.SetComponentData(entity, materialMesh);
+                }
+                else
+                {
+                    Debug.LogError($"Soft body Entity({entity.Index}:{entity.Version}) is drawn undeformed: {error}.");
+                }
+
+                // Added even on failure, so the body is not retried (and the error not repeated) every frame.
+                entityManager.AddComponentData(entity, instance);
+                DynamicBuffer<SoftBodyMeshVertex> vertices = entityManager.HasBuffer<SoftBodyMeshVertex>(entity)
+                    ? entityManager.GetBuffer<SoftBodyMeshVertex>(entity)
+                    : entityManager.AddBuffer<SoftBodyMeshVertex>(entity);
+                vertices.ResizeUninitialized(copy != null ? vertexCount : 0);
+            }
+            entities.Dispose();
+        }
+    }
+}

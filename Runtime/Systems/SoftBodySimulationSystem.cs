@@ -1,0 +1,104 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Burst;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+using Unity.Transforms;
+using UnityEngine;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Steps every initialized soft body once per fixed step with <see cref="ShapeMatchingSolver.Step"/>, the
+    /// same function the .NET tests call, against all <see cref="SoftBodyCollider"/>s. One body per job
+    /// index and no reductions across bodies, so results do not depend on scheduling. After the step the
+    /// entity's <see cref="LocalTransform"/> follows the body (<see cref="SoftBodyPlacement.ToLocalTransform"/>),
+    /// <see cref="SoftBodyState"/> holds the report, and a NaN-guard reset logs a warning naming the
+    /// entity and the particle. Pending <see cref="SoftBodyImpulse"/>s are applied first.
+    /// </summary>
+    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [BurstCompile]
+    public partial struct SoftBodySimulationSystem : ISystem
+    {
+        EntityQuery m_Colliders;
+
+        [BurstCompile]
+        public void OnCreate(ref SystemState state)
+        {
+            state.RequireForUpdate<SoftBodyShape>();
+            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+        }
+
+        [BurstCompile]
+        public void OnUpdate(ref SystemState state)
+        {
+            float dt = SystemAPI.Time.DeltaTime;
+            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+
+            new ApplyImpulseJob().ScheduleParallel();
+            new StepJob
+            {
+                Colliders = colliders,
+                DeltaTime = dt,
+                QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>(),
+            }.ScheduleParallel();
+            colliders.Dispose(state.Dependency);
+        }
+
+        /// <summary>Adds each enabled <see cref="SoftBodyImpulse"/> to its body's velocities, wakes the body and disables the impulse.</summary>
+        [BurstCompile]
+        [WithNone(typeof(SoftBodyUninitialized))]
+        partial struct ApplyImpulseJob : IJobEntity
+        {
+            void Execute(ref SoftBodyState body, in DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
+                in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
+            {
+                var x = positions.Reinterpret<float3>().AsNativeArray();
+                var v = velocities.Reinterpret<float3>().AsNativeArray();
+                for (int i = 0; i < v.Length && i < x.Length; i++)
+                    v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - body.Status.Center);
+                ShapeMatchingSolver.Wake(ref body.Status);
+                pending.ValueRW = false;
+            }
+        }
+
+        [BurstCompile]
+        [WithNone(typeof(SoftBodyUninitialized))]
+        partial struct StepJob : IJobEntity
+        {
+            /// <summary>Every static collider of the world, gathered this step.</summary>
+            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
+            /// <summary>Fixed time step (s).</summary>
+            public float DeltaTime;
+            /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
+            [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
+
+            void Execute(Entity entity, in SoftBodyShape shape, in SoftBodySettings settings, ref SoftBodyState body,
+                ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
+                DynamicBuffer<SoftBodyCluster> clusters)
+            {
+                ref SoftBodyShapeBlob blob = ref shape.Blob.Value;
+                int n = blob.ParticleCount;
+                // Buffers are sized by the initialization system; anything else is not a body this job can step.
+                if (positions.Length != n || velocities.Length != n || clusters.Length != blob.ClusterCount)
+                    return;
+                var quadratic = default(System.Span<float3x3>);
+                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<SoftBodyQuadraticInverse> perInstance)
+                    && perInstance.Length == blob.QuadraticInverse.Length)
+                    quadratic = SoftBodyBuffers.AsSpan(perInstance);
+
+                var scratch = new NativeArray<float3>(SoftBodyBuffers.ScratchPerParticle * n, Allocator.Temp,
+                    NativeArrayOptions.UninitializedMemory);
+                var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
+                ShapeMatchingStepReport report = ShapeMatchingSolver.Step(blob.AsModel(), settings.Value,
+                    Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
+                scratch.Dispose();
+
+                body.LastReport = report;
+                if (report.Reset)
+                    Debug.LogWarning($"Soft body Entity({entity.Index}:{entity.Version}) was reset to its rest shape by the NaN guard: particle {report.BadParticle} had a non-finite or excessive position or velocity.");
+                transform = SoftBodyPlacement.ToLocalTransform(body.Status, blob.BodyRest.RestCenter);
+            }
+        }
+    }
+}

@@ -1,0 +1,20 @@
+using Unity.Collections;
+
+namespace Unity.Entities
+{
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.html
+    // (source: needle-mirror/com.unity.entities 1.4.2, Unity.Entities/Iterators/DynamicBuffer.cs)
+    public struct DynamicBuffer<T> : IQueryTypeParameter where T : unmanaged
+    {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.Length.html
+        public int Length => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.Item.html
+        public T this[int index] { get => throw null; set => throw null; }
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.ResizeUninitialized.html
+        public void ResizeUninitialized(int length) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.Reinterpret.html
+        public DynamicBuffer<U> Reinterpret<U>() where U : unmanaged => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.AsNativeArray.html
+        public NativeArray<T> AsNativeArray() => throw null;
+    }
+}

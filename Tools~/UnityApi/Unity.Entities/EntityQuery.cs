@@ -1,0 +1,16 @@
+using Unity.Collections;
+
+namespace Unity.Entities
+{
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.html
+    // (source: needle-mirror/com.unity.entities 1.4.2, Unity.Entities/Iterators/EntityQuery.cs)
+    public struct EntityQuery
+    {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.IsEmpty.html
+        public bool IsEmpty => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.ToEntityArray.html
+        public NativeArray<Entity> ToEntityArray(AllocatorManager.AllocatorHandle allocator) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.ToComponentDataArray.html
+        public NativeArray<T> ToComponentDataArray<T>(AllocatorManager.AllocatorHandle allocator) where T : unmanaged, IComponentData => throw null;
+    }
+}

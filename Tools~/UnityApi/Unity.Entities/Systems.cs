@@ -1,0 +1,59 @@
+using System;
+
+// Source: needle-mirror/com.unity.entities 1.4.2, Unity.Entities/ComponentSystemBase.cs, SystemBase.cs,
+// ComponentSystemGroup.cs, DefaultWorld.cs and ScriptBehaviourUpdateOrder.cs.
+namespace Unity.Entities
+{
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.html
+    public abstract partial class ComponentSystemBase
+    {
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemBase.html
+    public abstract partial class SystemBase : ComponentSystemBase
+    {
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemGroup.html
+    public abstract partial class ComponentSystemGroup : SystemBase
+    {
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.FixedStepSimulationSystemGroup.html
+    public partial class FixedStepSimulationSystemGroup : ComponentSystemGroup
+    {
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.PresentationSystemGroup.html
+    public partial class PresentationSystemGroup : ComponentSystemGroup
+    {
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateInGroupAttribute.html
+    [AttributeUsage(AttributeTargets.Class | AttributeTargets.Struct)]
+    public class UpdateInGroupAttribute : Attribute
+    {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateInGroupAttribute.OrderFirst.html
+        public bool OrderFirst = false;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateInGroupAttribute.OrderLast.html
+        public bool OrderLast = false;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateInGroupAttribute.-ctor.html
+        public UpdateInGroupAttribute(Type groupType) => throw null;
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateBeforeAttribute.html
+    [AttributeUsage(AttributeTargets.Class | AttributeTargets.Struct, AllowMultiple = true)]
+    public class UpdateBeforeAttribute : Attribute
+    {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateBeforeAttribute.-ctor.html
+        public UpdateBeforeAttribute(Type systemType) => throw null;
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateAfterAttribute.html
+    [AttributeUsage(AttributeTargets.Class | AttributeTargets.Struct, AllowMultiple = true)]
+    public class UpdateAfterAttribute : Attribute
+    {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.UpdateAfterAttribute.-ctor.html
+        public UpdateAfterAttribute(Type systemType) => throw null;
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // https://docs.unity3d.com/ScriptReference/ScriptableObject.html
+    public class ScriptableObject : Object
+    {
+    }
+}
