@@ -1,0 +1,77 @@
+using System.Collections.Generic;
+using SoftBodyDynamics.Authoring;
+using SoftBodyDynamics.Solvers;
+using UnityEditor;
+using UnityEditor.UIElements;
+using UnityEngine;
+using UnityEngine.UIElements;
+
+namespace SoftBodyDynamics.Editor
+{
+    /// <summary>
+    /// Inspector of <see cref="SoftBodyColliderAuthoring"/>: shows only the size fields the chosen shape uses and
+    /// the live list of validation errors and warnings, including those caused by the Transform's scale.
+    /// </summary>
+    [CustomEditor(typeof(SoftBodyColliderAuthoring))]
+    [CanEditMultipleObjects]
+    public sealed class SoftBodyColliderAuthoringEditor : UnityEditor.Editor
+    {
+        PropertyField m_Size;
+        PropertyField m_Radius;
+        PropertyField m_Height;
+        PropertyField m_Direction;
+        VisualElement m_Issues;
+
+        public override VisualElement CreateInspectorGUI()
+        {
+            var root = new VisualElement();
+            m_Issues = new VisualElement();
+            root.Add(m_Issues);
+            root.Add(new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.shape))));
+            root.Add(new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.center))));
+            root.Add(m_Size = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.size))));
+            root.Add(m_Radius = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.radius))));
+            root.Add(m_Height = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.height))));
+            root.Add(m_Direction = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.direction))));
+
+            root.TrackSerializedObjectValue(serializedObject, _ => Refresh());
+            // Scale and rotation live on the Transforms: track them too, for the non-uniform scale warning.
+            var transforms = new List<Object>();
+            foreach (Object selected in targets)
+                if (selected is SoftBodyColliderAuthoring collider)
+                    transforms.Add(collider.transform);
+            root.TrackSerializedObjectValue(new SerializedObject(transforms.ToArray()), _ => Refresh());
+            Refresh();
+            return root;
+        }
+
+        void Refresh()
+        {
+            if (m_Issues == null)
+                return;
+            bool usesSize = false, usesRadius = false, usesCapsule = false;
+            bool several = targets.Length > 1;
+            m_Issues.Clear();
+            foreach (Object selected in targets)
+            {
+                var collider = selected as SoftBodyColliderAuthoring;
+                if (collider == null)
+                    continue;
+                usesSize |= collider.shape == ColliderShapeType.Box;
+                usesRadius |= collider.shape == ColliderShapeType.Sphere || collider.shape == ColliderShapeType.Capsule;
+                usesCapsule |= collider.shape == ColliderShapeType.Capsule;
+                string prefix = several ? collider.name + ": " : "";
+                foreach (SoftBodyColliderIssue issue in SoftBodyColliderValidation.Validate(collider))
+                    m_Issues.Add(new HelpBox(prefix + issue.Message,
+                        issue.Severity == SoftBodyIssueSeverity.Error ? HelpBoxMessageType.Error : HelpBoxMessageType.Warning));
+            }
+            Show(m_Size, usesSize);
+            Show(m_Radius, usesRadius);
+            Show(m_Height, usesCapsule);
+            Show(m_Direction, usesCapsule);
+        }
+
+        static void Show(VisualElement element, bool visible) =>
+            element.style.display = new StyleEnum<DisplayStyle>(visible ? DisplayStyle.Flex : DisplayStyle.None);
+    }
+}

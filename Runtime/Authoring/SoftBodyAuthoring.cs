@@ -1,0 +1,183 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Authoring
+{
+    /// <summary>
+    /// Makes this GameObject's mesh (from its MeshFilter) a shape-matching soft body. At bake time the mesh, scaled
+    /// by the Transform, is welded into surface particles, optionally filled with interior particles, grouped into
+    /// overlapping clusters and stored in a blob; at runtime the body starts at this GameObject's world position and
+    /// rotation, as a root entity (not parented) at scale 1.
+    /// Every field is checked by <see cref="SoftBodyAuthoringValidation"/>; a body with an error is not baked.
+    /// </summary>
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Soft Body Dynamics/Soft Body")]
+    public sealed class SoftBodyAuthoring : MonoBehaviour
+    {
+        // ---- Preset
+
+        [Tooltip("Material preset: sets Mode, Stiffness, Beta, Damping, Plasticity, Friction and Restitution. "
+                 + "Editing one of those by hand switches to Custom.")]
+        public SoftBodyPreset preset = SoftBodyPreset.Jelly;
+
+        /// <summary>The preset whose values the fields hold (detects a newly picked preset in OnValidate).</summary>
+        [SerializeField, HideInInspector]
+        internal SoftBodyPreset appliedPreset = SoftBodyPreset.Jelly;
+
+        // ---- Shape (bake-time build settings)
+
+        [Tooltip("Size of the overlapping shape-matching regions (m). 0, or at least the mesh's longest side, makes one cluster "
+                 + "of the whole body: it keeps its overall shape but cannot bend. Smaller clusters bend and wobble locally; "
+                 + "about a quarter of the body is a good start. Default 0.4 m.")]
+        [Min(0f)]
+        public float clusterSize = 0.4f;
+
+        [Tooltip("Fill a closed mesh with particles on a cubic lattice, so the body has volume and its clusters are not hollow "
+                 + "shells. Open meshes get a warning and no interior particles. Default on.")]
+        public bool addInteriorParticles = true;
+
+        [Tooltip("Distance between interior particles (m). 0 picks one eighth of the mesh's longest side. Smaller: more "
+                 + "particles, better volume, slower bake and simulation. Default 0 (automatic).")]
+        [Min(0f)]
+        public float interiorSpacing = 0f;
+
+        [Tooltip("Render vertices closer than this fraction of the mesh's bounds diagonal become one particle (dimensionless). "
+                 + "The default 1e-5 merges the copies a mesh splits for UV seams and hard edges. Ignored when Weld Distance > 0.")]
+        [Min(0f)]
+        public float weldTolerance = MeshWelding.DefaultRelativeTolerance;
+
+        [Tooltip("Absolute weld distance (m). Above 0 it replaces Weld Tolerance: use it to merge vertices a modelling tool "
+                 + "left slightly apart. Default 0 (use the relative tolerance).")]
+        [Min(0f)]
+        public float weldDistance = 0f;
+
+        [Tooltip("Mass of the whole body (kg), spread evenly over all particles. Default 1 kg.")]
+        [Min(0f)]
+        public float totalMass = 1f;
+
+        // ---- Material
+
+        [Tooltip("Rigid: rotation only (stiff, cheapest). Linear: also shear and stretch, blended by Beta. "
+                 + "Quadratic: also bending and twisting within one cluster (costs 324 bytes per cluster). Default Linear.")]
+        public ShapeMatchingMode mode = ShapeMatchingMode.Linear;
+
+        [Tooltip("Stiffness α: fraction of the way back to the goal shape covered per frame (0–1, independent of the substep "
+                 + "count). 1 = stiff, 0.05 = very soft. Jelly 0.15.")]
+        [Range(0f, 1f)]
+        public float stiffness = 0.15f;
+
+        [Tooltip("β: how much of the linear or quadratic deformation the goal shape keeps (0–1). 0 = rigid goals, "
+                 + "1 = the body may shear and stretch freely. Unused in Rigid mode. Jelly 0.6.")]
+        [Range(0f, 1f)]
+        public float beta = 0.6f;
+
+        [Tooltip("Rate at which wobbling decays (1/s). Only motion that differs from the body's rigid motion is damped, so "
+                 + "falling and spinning are untouched. 0 = none. Jelly 0.5.")]
+        [Min(0f)]
+        public float damping = 0.5f;
+
+        [Tooltip("Simulation substeps per fixed step (1–64). More: stiffer contacts and less tunnelling, at proportional cost. Default 4.")]
+        [Range(1, 64)]
+        public int substeps = 4;
+
+        [Tooltip("Uniform acceleration on every particle (m/s²): gravity plus any wind-like force per mass. Default (0, −9.81, 0).")]
+        public Vector3 gravity = new Vector3(0f, -9.81f, 0f);
+
+        // ---- Plasticity
+
+        [Tooltip("Strain (‖S − I‖, dimensionless) above which the rest shape starts to flow. 0 with Creep 0 = perfectly elastic. "
+                 + "Clay 0.05.")]
+        [Min(0f)]
+        public float plasticYield = 0f;
+
+        [Tooltip("Rate (1/s) at which the rest shape follows the deformation while yielding. 0 = elastic. Clay 10.")]
+        [Min(0f)]
+        public float plasticCreep = 0f;
+
+        [Tooltip("Largest plastic strain (dimensionless) the rest shape may accumulate. 0 = elastic. Clay 0.6.")]
+        [Min(0f)]
+        public float plasticMaxDeformation = 0f;
+
+        // ---- Collisions
+
+        [Tooltip("Radius of every particle against colliders (m). Default 0.02 m.")]
+        [Min(0f)]
+        public float particleRadius = 0.02f;
+
+        [Tooltip("Coulomb friction coefficient μ against colliders (0 = ice, about 1 = rubber on concrete). Jelly 0.4.")]
+        [Min(0f)]
+        public float friction = 0.4f;
+
+        [Tooltip("Restitution e of contacts (0–1): 0 = no bounce, 1 = perfectly elastic bounce. Jelly 0.2.")]
+        [Range(0f, 1f)]
+        public float restitution = 0.2f;
+
+        // ---- Sleep
+
+        [Tooltip("The body sleeps once every particle has stayed slower than this for Sleep Delay (m/s). 0 = never sleeps. Default 0.02 m/s.")]
+        [Min(0f)]
+        public float sleepSpeed = 0.02f;
+
+        [Tooltip("Time every particle must stay below Sleep Speed before the body sleeps (s). Default 1 s.")]
+        [Min(0f)]
+        public float sleepDelay = 1f;
+
+        // ---- Limits
+
+        [Tooltip("Most particles this body may have. Baking fails above it: simplify the mesh or raise Interior Spacing. Default 16384.")]
+        [Min(1f)]
+        public int maxParticles = SoftBodyBuildSettings.DefaultMaxParticles;
+
+        [Tooltip("Speed above which the state counts as broken and the body is reset to its rest shape (m/s). Default 500 m/s.")]
+        [Min(0f)]
+        public float maxSpeed = 500f;
+
+        [Tooltip("Rotation-extraction iterations per cluster and substep (warm-started; 2–3 usually suffice). Default 20 (a cap, rarely reached).")]
+        [Range(1, 100)]
+        public int rotationIterations = RotationExtraction.DefaultMaxIterations;
+
+        /// <summary>How the mesh becomes particles and clusters (bake time).</summary>
+        public SoftBodyBuildSettings BuildSettings => new SoftBodyBuildSettings
+        {
+            WeldTolerance = weldTolerance,
+            WeldDistance = weldDistance,
+            AddInteriorParticles = addInteriorParticles,
+            InteriorSpacing = interiorSpacing,
+            ClusterSize = clusterSize,
+            TotalMass = totalMass,
+            BuildQuadratic = mode == ShapeMatchingMode.Quadratic,
+            MaxParticles = maxParticles,
+        };
+
+        /// <summary>The solver parameters (runtime).</summary>
+        public ShapeMatchingParameters Parameters => new ShapeMatchingParameters
+        {
+            Mode = mode,
+            Stiffness = stiffness,
+            Beta = beta,
+            Damping = damping,
+            Acceleration = UnityMathConversions.ToFloat3(gravity),
+            Substeps = substeps,
+            ParticleRadius = particleRadius,
+            Friction = friction,
+            Restitution = restitution,
+            Plasticity = new PlasticityParameters { Yield = plasticYield, Creep = plasticCreep, MaxDeformation = plasticMaxDeformation },
+            SleepSpeed = sleepSpeed,
+            SleepDelay = sleepDelay,
+            MaxSpeed = maxSpeed,
+            RotationIterations = rotationIterations,
+        };
+
+        /// <summary>
+        /// The scale baked into the rest shape: the magnitude of the Transform's lossy scale. Soft bodies are simulated
+        /// and drawn at scale 1, so a scaled GameObject becomes a body of the size it shows in the Scene view.
+        /// </summary>
+        public float3 BakedScale => math.abs(UnityMathConversions.ToFloat3(transform.lossyScale));
+
+        /// <summary>Writes <paramref name="value"/>'s material values into this component and selects it.</summary>
+        public void ApplyPreset(SoftBodyPreset value) => SoftBodyPresets.Apply(this, value);
+
+        void OnValidate() => SoftBodyPresets.Synchronize(this);
+    }
+}

@@ -1,0 +1,36 @@
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Entities;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Authoring
+{
+    /// <summary>
+    /// Bakes a <see cref="SoftBodyColliderAuthoring"/> into a <see cref="SoftBodyCollider"/> holding its
+    /// world-space shape. A collider with a validation error is not baked, and the error is logged with the
+    /// GameObject as context.
+    /// </summary>
+    public sealed class SoftBodyColliderBaker : Baker<SoftBodyColliderAuthoring>
+    {
+        public override void Bake(SoftBodyColliderAuthoring authoring)
+        {
+            // The world-space shape depends on the whole parent chain of the Transform.
+            DependsOn(authoring.transform);
+
+            List<SoftBodyColliderIssue> issues = SoftBodyColliderValidation.Validate(authoring);
+            foreach (SoftBodyColliderIssue issue in issues)
+            {
+                string message = $"Soft Body Collider on '{authoring.name}': {issue.Message}";
+                if (issue.Severity == SoftBodyIssueSeverity.Error)
+                    Debug.LogError(message + " The collider was not baked.", authoring);
+                else
+                    Debug.LogWarning(message, authoring);
+            }
+            if (SoftBodyColliderIssue.AnyError(issues))
+                return;
+
+            Entity entity = GetEntity(TransformUsageFlags.None);
+            AddComponent(entity, new SoftBodyCollider { Shape = authoring.ToWorldShape() });
+        }
+    }
+}
