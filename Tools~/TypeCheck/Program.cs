@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Tools.TypeCheck
     /// <summary>
     /// Type-checks the Unity side of the package without Unity.
     /// <list type="number">
-    /// <item>Finds every *.asmdef (and *.asmref) the way Unity does: folders whose name ends in '~' or starts
+    /// <item>Finds every *.asmdef (and *.asmref) the way Unity does (plus the importable samples in Samples~): folders whose name ends in '~' or starts
     /// with '.' are skipped, and each .cs file belongs to the assembly of its nearest enclosing folder that has
     /// an asmdef or asmref.</item>
     /// <item>Writes one csproj per asmdef into Tools~/TypeCheck/obj/generated/ (git-ignored): references to other
@@ -322,9 +322,11 @@ namespace SoftBodyDynamics.Tools.TypeCheck
             foreach (var sub in Directory.GetDirectories(dir).OrderBy(d => d, StringComparer.Ordinal))
             {
                 var name = System.IO.Path.GetFileName(sub);
-                // Unity ignores hidden folders, folders ending in '~', and 'cvs' folders.
-                if (name.StartsWith(".", StringComparison.Ordinal) || name.EndsWith("~", StringComparison.Ordinal)
-                    || string.Equals(name, "cvs", StringComparison.OrdinalIgnoreCase))
+                // Unity ignores hidden folders, folders ending in '~', and 'cvs' folders. Samples~ is the
+                // exception we check too: Unity compiles a sample once the user imports it into Assets.
+                bool samples = string.Equals(name, "Samples~", StringComparison.Ordinal) && dir == root;
+                if (!samples && (name.StartsWith(".", StringComparison.Ordinal) || name.EndsWith("~", StringComparison.Ordinal)
+                    || string.Equals(name, "cvs", StringComparison.OrdinalIgnoreCase)))
                     continue;
                 Scan(root, sub, asmdefs, asmrefs, csFiles, problems);
             }
