@@ -9,10 +9,10 @@ namespace SoftBodyDynamics.Authoring
     /// frame, substep-independent; β blends the linear transform into the rotation; damping decays only the
     /// non-rigid velocity):
     /// <list type="bullet">
-    /// <item>Jelly: linear, α 0.15, β 0.6, damping 0.5/s, elastic, μ 0.4, e 0.2. A low α lets the body sag and
-    /// wobble visibly; a high β lets it shear and stretch; light damping keeps wobbles going for about two
+    /// <item>Jelly: linear, α 0.15, β 0.6, damping 3/s, elastic, μ 0.4, e 0.2. A low α lets the body sag and
+    /// wobble visibly; a high β lets it shear and stretch; moderate damping lets wobbles die out within about two
     /// seconds; moderate friction and a little bounce.</item>
-    /// <item>Rubber: linear, α 0.6, β 0.3, damping 2/s, elastic, μ 1.0, e 0.7. A high α recovers the shape within
+    /// <item>Rubber: linear, α 0.6, β 0.3, damping 4/s, elastic, μ 1.0, e 0.7. A high α recovers the shape within
     /// a few frames; a lower β keeps it firm; rubber grips (μ about 1 on most surfaces) and bounces.</item>
     /// <item>Clay: linear, α 0.4, β 0.8, damping 8/s, plasticity yield 0.05, creep 10/s, maximum 0.6, μ 0.9, e 0.
     /// A high β lets the linear transform carry the dent; beyond 5 % strain the rest shape creeps towards the
@@ -29,7 +29,7 @@ namespace SoftBodyDynamics.Authoring
             Mode = ShapeMatchingMode.Linear,
             Stiffness = 0.15f,
             Beta = 0.6f,
-            Damping = 0.5f,
+            Damping = 3f,
             Plasticity = PlasticityParameters.None,
             Friction = 0.4f,
             Restitution = 0.2f,
@@ -40,7 +40,7 @@ namespace SoftBodyDynamics.Authoring
             Mode = ShapeMatchingMode.Linear,
             Stiffness = 0.6f,
             Beta = 0.3f,
-            Damping = 2f,
+            Damping = 4f,
             Plasticity = PlasticityParameters.None,
             Friction = 1f,
             Restitution = 0.7f,

@@ -202,7 +202,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Jelly);
 
-            AssertMaterial(body, ShapeMatchingMode.Linear, 0.15f, 0.6f, 0.5f, 0f, 0f, 0f, 0.4f, 0.2f);
+            AssertMaterial(body, ShapeMatchingMode.Linear, 0.15f, 0.6f, 3f, 0f, 0f, 0f, 0.4f, 0.2f);
             Assert.That(body.preset, Is.EqualTo(SoftBodyPreset.Jelly));
         }
 
@@ -212,7 +212,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Rubber);
 
-            AssertMaterial(body, ShapeMatchingMode.Linear, 0.6f, 0.3f, 2f, 0f, 0f, 0f, 1f, 0.7f);
+            AssertMaterial(body, ShapeMatchingMode.Linear, 0.6f, 0.3f, 4f, 0f, 0f, 0f, 1f, 0.7f);
             Assert.That(body.preset, Is.EqualTo(SoftBodyPreset.Rubber));
         }
 

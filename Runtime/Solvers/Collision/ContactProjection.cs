@@ -11,10 +11,13 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public static class ContactProjection
     {
+        /// <summary>Distance off the surface, as a fraction of the particle radius, from which a particle counts as arriving.</summary>
+        const float k_ArrivalFraction = 0.1f;
+
         /// <summary>
         /// Projects <paramref name="predicted"/> out of the colliders and adds each push to the velocity
-        /// (Δv = Δx/h); a particle that approached a surface at v⁻ₙ = v·n &lt; −<paramref name="bounceThreshold"/>
-        /// leaves it at −e·v⁻ₙ. Writes each particle's contact normal (zero when free) to
+        /// (Δv = Δx/h); a particle that arrives at a surface (from more than a tenth of its radius away) at
+        /// v⁻ₙ = v·n &lt; −<paramref name="bounceThreshold"/> leaves it at −e·v⁻ₙ. Writes each particle's contact normal (zero when free) to
         /// <paramref name="contactNormals"/>. Returns the number of particles in contact.
         /// </summary>
         /// <param name="previous">Positions at the start of the substep (for the swept test and friction).</param>
@@ -34,12 +37,19 @@ namespace SoftBodyDynamics.Solvers
                 {
                     float3 n;
                     float depth;
-                    // A particle that came from outside leaves through the face it entered (a fast one may
-                    // be nearer the far face, or already through a thin box); one that started inside
-                    // leaves through the nearest face.
-                    if (ParticleCollision.Sweep(colliders[c], previous[i], x, radius, out float3 entry, out n))
-                        depth = math.dot(entry - x, n);
-                    else if (!ParticleCollision.Penetration(colliders[c], x, radius, out n, out depth))
+                    // Pushed along the normal of the closest surface point, except when the swept test shows
+                    // the particle came through a box face that the closest point contradicts: its centre
+                    // ended inside the box (the nearest face may be the far one) or beyond a thin box
+                    // (the closest point is on the far side). Then it leaves through the face it entered.
+                    bool hit = ParticleCollision.Penetration(colliders[c], x, radius, out n, out depth, out bool deep);
+                    if (colliders[c].Type == ColliderShapeType.Box
+                        && ParticleCollision.Sweep(colliders[c], previous[i], x, radius, out float3 entry, out float3 face)
+                        && (!hit || deep || math.dot(n, face) < 0f))
+                    {
+                        n = face;
+                        depth = math.dot(entry - x, face);
+                    }
+                    else if (!hit)
                         continue;
                     x += depth * n;
                     // Friction: cancel tangential motion of this substep, at most μ·depth.
@@ -57,7 +67,11 @@ namespace SoftBodyDynamics.Solvers
                 contacts++;
                 float approach = math.dot(velocities[i], contactNormal);
                 float3 v = velocities[i] + (x - start) * invH;
-                if (approach < -bounceThreshold)
+                // Bounce only a particle that arrives: one that started the substep more than a tenth of its
+                // radius off the surface. A resting particle the goal pull presses into the floor would
+                // otherwise bounce every substep and never settle.
+                bool arriving = math.dot(previous[i] - x, contactNormal) > k_ArrivalFraction * radius;
+                if (arriving && approach < -bounceThreshold)
                     v += (-restitution * approach - math.dot(v, contactNormal)) * contactNormal;
                 velocities[i] = v;
                 predicted[i] = x;

@@ -6,7 +6,9 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// Particle (sphere of radius r) against a static primitive: penetration depth and the outward
     /// normal to push along, and a swept test against planes and boxes so that a fast particle cannot
-    /// pass through them between two substeps. Boxes are inflated by r (flat faces, sharp edges).
+    /// pass through them between two substeps. A particle near a box edge or corner is pushed along the
+    /// direction from the closest point of the box (the box inflated by r has rounded edges), so its
+    /// contact normal turns smoothly as it slides over an edge.
     /// </summary>
     public static class ParticleCollision
     {
@@ -14,8 +16,17 @@ namespace SoftBodyDynamics.Solvers
         /// True when a particle at <paramref name="x"/> overlaps <paramref name="shape"/>; then
         /// <paramref name="normal"/> is the unit direction to push it and <paramref name="depth"/> &gt; 0 how far (m).
         /// </summary>
-        public static bool Penetration(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth)
+        public static bool Penetration(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth) =>
+            Penetration(shape, x, radius, out normal, out depth, out _);
+
+        /// <summary>
+        /// As above; <paramref name="deep"/> is set when the particle's centre is inside a box, where the
+        /// nearest face is only a guess at the side it came from (the swept test knows better).
+        /// </summary>
+        public static bool Penetration(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth,
+            out bool deep)
         {
+            deep = false;
             switch (shape.Type)
             {
                 case ColliderShapeType.Plane:
@@ -27,7 +38,7 @@ namespace SoftBodyDynamics.Solvers
                 case ColliderShapeType.Capsule:
                     return Round(x, ClosestOnSegment(x, shape.Center, shape.Axis), shape.Radius + radius, out normal, out depth);
                 case ColliderShapeType.Box:
-                    return Box(shape, x, radius, out normal, out depth);
+                    return Box(shape, x, radius, out normal, out depth, out deep);
                 default:
                     normal = float3.zero;
                     depth = 0f;
@@ -61,7 +72,9 @@ namespace SoftBodyDynamics.Solvers
             float3 b = math.rotate(inverse, to - shape.Center);
             float3 extent = shape.HalfExtents + radius;
             float3 d = b - a;
-            float tEnter = 0f, tExit = 1f;
+            // Slab test. The entry face is the axis whose slab is entered last; a particle resting on a
+            // face (entry time 0) counts as outside, so it leaves through that face, not the nearest one.
+            float latestEntry = float.NegativeInfinity, tExit = 1f;
             int enterAxis = -1;
             for (int axis = 0; axis < 3; axis++)
             {
@@ -74,13 +87,12 @@ namespace SoftBodyDynamics.Solvers
                 float inv = 1f / d[axis];
                 float t0 = (-extent[axis] - a[axis]) * inv, t1 = (extent[axis] - a[axis]) * inv;
                 if (t0 > t1) { float t = t0; t0 = t1; t1 = t; }
-                if (t0 > tEnter) { tEnter = t0; enterAxis = axis; }
+                if (t0 > latestEntry) { latestEntry = t0; enterAxis = axis; }
                 tExit = math.min(tExit, t1);
-                if (tEnter > tExit)
-                    return false;
             }
-            if (enterAxis < 0) // started inside: the discrete test handles it
+            if (enterAxis < 0 || latestEntry < 0f || latestEntry > tExit) // started inside, or missed
                 return false;
+            float tEnter = latestEntry;
             float3 local = float3.zero;
             local[enterAxis] = d[enterAxis] > 0f ? -1f : 1f;
             normal = math.rotate(shape.Rotation, local);
@@ -114,20 +126,33 @@ namespace SoftBodyDynamics.Solvers
             return a + t * ab;
         }
 
-        static bool Box(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth)
+        static bool Box(in ColliderShape shape, float3 x, float radius, out float3 normal, out float depth, out bool deep)
         {
             float3 local = math.rotate(math.conjugate(shape.Rotation), x - shape.Center);
-            float3 gap = math.abs(local) - (shape.HalfExtents + radius); // < 0 on every axis = inside
+            float3 closest = math.clamp(local, -shape.HalfExtents, shape.HalfExtents);
+            float3 offset = local - closest;
+            float d2 = math.lengthsq(offset);
             normal = float3.zero;
             depth = 0f;
-            if (!(gap.x < 0f && gap.y < 0f && gap.z < 0f))
-                return false;
-            // Leave through the nearest face.
+            deep = false;
+            if (d2 > 0f)
+            {
+                // Centre outside the box: push away from the closest point (rounded edges and corners).
+                if (!(d2 < radius * radius))
+                    return false;
+                float d = math.sqrt(d2);
+                normal = math.rotate(shape.Rotation, offset / d);
+                depth = radius - d;
+                return true;
+            }
+            // Centre inside the box: leave through the nearest face.
+            deep = true;
+            float3 gap = math.abs(local) - shape.HalfExtents; // ≤ 0 on every axis
             int axis = gap.x > gap.y ? (gap.x > gap.z ? 0 : 2) : (gap.y > gap.z ? 1 : 2);
             float3 n = float3.zero;
             n[axis] = local[axis] >= 0f ? 1f : -1f;
             normal = math.rotate(shape.Rotation, n);
-            depth = -gap[axis];
+            depth = radius - gap[axis];
             return true;
         }
     }

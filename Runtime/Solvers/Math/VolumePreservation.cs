@@ -19,13 +19,27 @@ namespace SoftBodyDynamics.Solvers
         public const float DefaultRelativeDeterminantFloor = 1e-6f;
 
         /// <summary>
+        /// Largest strain ‖Ã − R‖_F a goal transform may ask for. A cluster squashed flat has a tiny
+        /// det A, and A / ∛det A then stretches it enormously in the other directions (a cluster
+        /// flattened to 1e-5 would be told to grow 46-fold in-plane): goals that far away inject
+        /// energy. The strain is scaled down to this bound instead (1 = 100% strain).
+        /// </summary>
+        public const float MaxGoalStrain = 1f;
+
+        /// <summary>
         /// Returns A / ∛det(A) when det(A) is finite and above the floor; otherwise returns false and
         /// leaves <paramref name="normalized"/> at identity.
         /// </summary>
         public static bool TryNormalize(in float3x3 a, out float3x3 normalized,
+            float relativeDeterminantFloor = DefaultRelativeDeterminantFloor) =>
+            TryNormalize(a, out normalized, out _, relativeDeterminantFloor);
+
+        /// <summary>As above; also returns det(A / max|Aᵢⱼ|), the determinant relative to A's scale.</summary>
+        public static bool TryNormalize(in float3x3 a, out float3x3 normalized, out float relativeDeterminant,
             float relativeDeterminantFloor = DefaultRelativeDeterminantFloor)
         {
             normalized = float3x3.identity;
+            relativeDeterminant = 0f;
             if (!Finite.All(a))
                 return false;
             float scale = Matrix3.MaxAbs(a);
@@ -33,16 +47,19 @@ namespace SoftBodyDynamics.Solvers
                 return false;
             // Normalise first so det cannot under- or overflow in float32.
             float3x3 an = a * (1f / scale);
-            float det = math.determinant(an);
-            if (!(det > relativeDeterminantFloor)) // also rejects NaN
+            relativeDeterminant = math.determinant(an);
+            if (!(relativeDeterminant > relativeDeterminantFloor)) // also rejects NaN
                 return false;
-            normalized = an * (1f / math.pow(det, 1f / 3f));
+            normalized = an * (1f / math.pow(relativeDeterminant, 1f / 3f));
             return true;
         }
 
         /// <summary>
-        /// Goal transform of the linear mode: β·Ã + (1 − β)·R with Ã the volume-normalised linear
-        /// transform (Müller et al. 2005, eq. 8 and §4.3). Falls back to R when Ã is degenerate.
+        /// Goal transform of the linear mode: R + β·(Ã − R), i.e. β·Ã + (1 − β)·R with Ã the
+        /// volume-normalised linear transform (Müller et al. 2005, eq. 8 and §4.3), made safe for
+        /// squashed clusters in two ways: the strain Ã − R is limited to <see cref="MaxGoalStrain"/>,
+        /// and it fades out linearly as det falls from 10× the floor to the floor, so the fallback to
+        /// R is continuous (no jump in the goals, hence no kick, when a cluster flattens).
         /// </summary>
         /// <param name="aLinear">A = A_pq · A_qq⁻¹.</param>
         /// <param name="rotation">The rotational part of A_pq.</param>
@@ -51,14 +68,22 @@ namespace SoftBodyDynamics.Solvers
         public static float3x3 LinearGoalTransform(in float3x3 aLinear, in float3x3 rotation, float beta,
             out bool rigidFallback)
         {
-            if (!TryNormalize(aLinear, out float3x3 normalized))
+            const float floor = DefaultRelativeDeterminantFloor;
+            if (!TryNormalize(aLinear, out float3x3 normalized, out float det, floor))
             {
                 rigidFallback = true;
                 return rotation;
             }
             rigidFallback = false;
-            float b = math.saturate(beta);
-            return b * normalized + (1f - b) * rotation;
+            float fade = math.saturate((det - floor) / (9f * floor));
+            return rotation + (math.saturate(beta) * fade) * LimitStrain(normalized - rotation);
+        }
+
+        /// <summary>The strain scaled down to a Frobenius norm of at most <see cref="MaxGoalStrain"/>.</summary>
+        public static float3x3 LimitStrain(in float3x3 strain)
+        {
+            float norm = math.sqrt(math.lengthsq(strain.c0) + math.lengthsq(strain.c1) + math.lengthsq(strain.c2));
+            return norm > MaxGoalStrain ? strain * (MaxGoalStrain / norm) : strain;
         }
     }
 }

@@ -141,8 +141,11 @@ namespace SoftBodyDynamics.Solvers
             r = new float3x3(cluster.Rotation);
             aLinear = cluster.Rest.LinearValid ? math.mul(p0, cluster.Rest.AqqInverse) * (length * length) : r;
             QuadraticShapeMatching.Transform(p0, p1, p2, inverseBlocks, out float3x3 t0, out float3x3 t1, out float3x3 t2);
-            float beta = math.saturate(p.Beta);
-            float3x3 g0 = beta * t0 + (1f - beta) * r, g1 = beta * t1, g2 = beta * t2;
+            // β blend of the 3×9 strain [Ã₀ − R, Ã₁, Ã₂], limited like the linear mode's.
+            float3x3 s0 = t0 - r;
+            float strain = math.sqrt(SquaredNorm(s0) + SquaredNorm(t1) + SquaredNorm(t2));
+            float beta = math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
+            float3x3 g0 = r + beta * s0, g1 = beta * t1, g2 = beta * t2;
             var goals = state.Goals;
             for (int k = start; k < end; k++)
             {
@@ -155,6 +158,8 @@ namespace SoftBodyDynamics.Solvers
                 goals[i] += model.InverseClusterCounts[i] * g;
             }
         }
+
+        static float SquaredNorm(in float3x3 m) => math.lengthsq(m.c0) + math.lengthsq(m.c1) + math.lengthsq(m.c2);
 
         static bool IsIdentity(in float3x3 m) =>
             m.c0.x == 1f && m.c1.y == 1f && m.c2.z == 1f && m.c0.y == 0f && m.c0.z == 0f

@@ -18,7 +18,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Rate (1/s) at which velocity that differs from the body's rigid motion decays:
         /// each substep vᵢ += (1 − e^(−damping·h))·(v_cm + ω × rᵢ − vᵢ). Rigid motion (momentum,
-        /// angular momentum) is untouched. 0 = none.
+        /// angular momentum) is untouched; wobble, sway and bending decay. 0 = none.
         /// </summary>
         public float Damping;
         /// <summary>Uniform acceleration on every particle: gravity plus any wind-like force per mass (m/s²).</summary>
@@ -33,7 +33,7 @@ namespace SoftBodyDynamics.Solvers
         public float Restitution;
         /// <summary>Plastic flow of the rest shape (Müller et al. 2005, §4.5).</summary>
         public PlasticityParameters Plasticity;
-        /// <summary>The body sleeps after every particle stayed slower than this for <see cref="SleepDelay"/> (m/s). 0 = never sleeps.</summary>
+        /// <summary>The body sleeps after its particles' mass-weighted RMS speed stayed below this for <see cref="SleepDelay"/> (m/s). 0 = never sleeps.</summary>
         public float SleepSpeed;
         /// <summary>Time below <see cref="SleepSpeed"/> before sleeping (s).</summary>
         public float SleepDelay;

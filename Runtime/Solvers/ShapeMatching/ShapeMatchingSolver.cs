@@ -12,13 +12,13 @@ namespace SoftBodyDynamics.Solvers
     /// Δᵢ = α_sub (gᵢ − x*ᵢ) (eq. 3), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h (see <c>PullTowardGoals</c>);</item>
     /// <item>collide: x* pushed out of colliders with friction, the push added to v (Δv = Δx/h),
     /// restitution on the normal velocity (<see cref="ContactProjection"/>);</item>
-    /// <item>update: xᵢ = x*ᵢ, then rigid-motion-preserving damping.</item>
+    /// <item>update: xᵢ = x*ᵢ, then damping of the velocity that differs from the body's rigid motion (<see cref="RigidMotionDamping"/>).</item>
     /// </list>
     /// Because goals are reached by a fraction α ≤ 1 of the way, there is no overshoot and the step is
     /// unconditionally stable (§3.3). After the substeps a guard checks every particle: a non-finite
     /// value, a speed above <see cref="ShapeMatchingParameters.MaxSpeed"/> or a position beyond
     /// <see cref="PositionLimit"/> resets the body to its rest shape at its last good placement and is
-    /// reported. A body whose particles all stay slow sleeps until a force change, a velocity written
+    /// reported. A body whose particles stay slow (mass-weighted RMS speed) sleeps until a force change, a velocity written
     /// from outside or an overlapping collider wakes it.
     /// The same function runs in the Burst jobs and in the .NET tests; it touches nothing but its arguments.
     /// </summary>
@@ -103,7 +103,7 @@ namespace SoftBodyDynamics.Solvers
                     RigidMotionDamping.Apply(x, v, model.Masses, damping, state.Goals);
             }
 
-            int bad = FindBadParticle(x, v, p.MaxSpeed, out float maxSpeedSq);
+            int bad = FindBadParticle(x, v, p.MaxSpeed, out _);
             if (bad >= 0)
             {
                 ResetToLastGoodPlacement(model, state, bad, ref status, ref report);
@@ -111,7 +111,7 @@ namespace SoftBodyDynamics.Solvers
             }
 
             UpdatePlacement(model, x, ref status);
-            if (p.SleepSpeed > 0f && maxSpeedSq < p.SleepSpeed * p.SleepSpeed)
+            if (p.SleepSpeed > 0f && MeanSquareSpeed(v, model.Masses) < p.SleepSpeed * p.SleepSpeed)
             {
                 status.StillTime += dt;
                 if (status.StillTime >= p.SleepDelay)
@@ -134,22 +134,23 @@ namespace SoftBodyDynamics.Solvers
         /// Eq. 3: Δᵢ = α (gᵢ − x*ᵢ), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h. Velocities change only by these small
         /// increments (never as a difference of two positions), so float32 round-off of momentum stays
         /// at the level of the increments. Shape matching is an internal force, so the pull must change
-        /// neither momentum nor angular momentum; two corrections make that hold in float32 too:
+        /// neither momentum nor angular momentum; two projections make that hold exactly:
         /// <list type="bullet">
         /// <item>Σ mᵢ Δᵢ = 0 in exact arithmetic, but the float32 rest offsets do not sum to exactly zero
         /// and that residual is the same every substep: the mass-weighted mean of Δ is removed.</item>
-        /// <item>The pull is torque-free about the predicted positions for an exact rotation, but angular
-        /// momentum is carried by xᵢ × vᵢ of the substep's start, which it changes by
-        /// Σ mᵢ xᵢ × Δᵢ / h = −Σ mᵢ vᵢ × Δᵢ + (rotation error)/h: O((hω)²) of the spin per substep, plus
-        /// the rotation's stopping tolerance amplified by 1/h. That amount is removed as a rigid spin
-        /// δω = −I⁻¹ Σ mᵢ xᵢ × Δᵢ / h, so a tumbling body keeps its angular momentum.</item>
+        /// <item>The pull is torque-free about the predicted positions only for rigid goals and an exact
+        /// rotation, while angular momentum is carried by xᵢ × vᵢ at the substep's start, which the pull
+        /// changes by Σ mᵢ (xᵢ − x_cm) × Δᵢ / h (for a tumbling body −Σ mᵢ vᵢ × Δᵢ, O((hω)²) of the spin
+        /// per substep, plus the rotation's stopping tolerance over h). The rigid rotation δθ × (xᵢ − x_cm)
+        /// with I δθ = Σ mᵢ (xᵢ − x_cm) × Δᵢ is removed from Δ, positions and velocities alike, so the
+        /// pull carries no torque and no velocity is left that the positions do not follow.</item>
         /// </list>
         /// </summary>
         static void PullTowardGoals(in ShapeMatchingModel model, in ShapeMatchingState state, float alpha, float h)
         {
             var x = state.Positions;
             var v = state.Velocities;
-            var goals = state.Goals;
+            var delta = state.Goals;
             var predicted = state.Predicted;
             float3 drift = float3.zero;
             float mass = 0f;
@@ -157,26 +158,30 @@ namespace SoftBodyDynamics.Solvers
             {
                 if (!(model.InverseClusterCounts[i] > 0f))
                     continue;
-                goals[i] -= predicted[i];
-                drift += model.Masses[i] * goals[i];
+                delta[i] -= predicted[i];
+                drift += model.Masses[i] * delta[i];
                 mass += model.Masses[i];
             }
             if (!(mass > 0f))
                 return;
             drift /= mass;
-            float invH = 1f / h;
-            float3 origin = x[0];
-            float3 injected = float3.zero;
+            float3 xcm = ShapeMatching.CenterOfMass(x, model.Masses);
+            float3 torque = float3.zero;
             for (int i = 0; i < x.Length; i++)
             {
-                if (!(model.InverseClusterCounts[i] > 0f))
-                    continue;
-                float3 delta = alpha * (goals[i] - drift);
-                injected += model.Masses[i] * math.cross(x[i] - origin, delta);
-                predicted[i] += delta;
-                v[i] += delta * invH;
+                delta[i] = model.InverseClusterCounts[i] > 0f ? alpha * (delta[i] - drift) : float3.zero;
+                torque += model.Masses[i] * math.cross(x[i] - xcm, delta[i]);
             }
-            RigidMotionDamping.AddSpin(x, v, model.Masses, -injected * invH);
+            float3 spin = math.mul(RigidMotionDamping.InverseInertia(x, model.Masses, xcm), torque);
+            if (!math.all(math.isfinite(spin)))
+                spin = float3.zero;
+            float invH = 1f / h;
+            for (int i = 0; i < x.Length; i++)
+            {
+                float3 d = delta[i] - math.cross(spin, x[i] - xcm);
+                predicted[i] += d;
+                v[i] += d * invH;
+            }
         }
 
         /// <summary>The NaN guard's answer: rest shape at the last good centre and rotation, at rest, reported.</summary>
@@ -245,6 +250,18 @@ namespace SoftBodyDynamics.Solvers
                 maxSpeedSq = math.max(maxSpeedSq, s2);
             }
             return -1;
+        }
+
+        /// <summary>Σ mᵢ|vᵢ|² / Σ mᵢ: the body sleeps on its RMS speed, so a few grazing surface particles do not keep it awake.</summary>
+        static float MeanSquareSpeed(ReadOnlySpan<float3> v, ReadOnlySpan<float> mass)
+        {
+            float sum = 0f, m = 0f;
+            for (int i = 0; i < v.Length; i++)
+            {
+                sum += mass[i] * math.lengthsq(v[i]);
+                m += mass[i];
+            }
+            return m > 0f ? sum / m : 0f;
         }
 
         static bool ShouldWake(in ShapeMatchingModel model, in ShapeMatchingParameters p, ReadOnlySpan<ColliderShape> colliders,

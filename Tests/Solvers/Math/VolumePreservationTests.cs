@@ -46,14 +46,46 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void LinearGoal_BlendsLinearAndRigid_ByBeta()
         {
-            float3x3 aLinear = Diag(2f, 0.5f, 1f); // det 1 already
+            float3x3 aLinear = Diag(1.25f, 0.8f, 1f); // det 1 already; strain ‖Ã − I‖_F ≈ 0.32, below the limit
             float3x3 r = float3x3.identity;
             float3x3 half = VolumePreservation.LinearGoalTransform(aLinear, r, 0.5f, out bool fallback);
             Assert.That(fallback, Is.False);
-            Assert.That(half.c0.x, Is.EqualTo(1.5f).Within(1e-6f));
-            Assert.That(half.c1.y, Is.EqualTo(0.75f).Within(1e-6f));
+            Assert.That(half.c0.x, Is.EqualTo(1.125f).Within(1e-6f));
+            Assert.That(half.c1.y, Is.EqualTo(0.9f).Within(1e-6f));
             float3x3 rigid = VolumePreservation.LinearGoalTransform(aLinear, r, 0f, out _);
             Assert.That(rigid.Equals(r), Is.True);
+        }
+
+        /// <summary>
+        /// A cluster squashed to 1e-4 of its height: A / ∛det would ask for a 21-fold in-plane stretch.
+        /// The strain handed to the goals is limited to <see cref="VolumePreservation.MaxGoalStrain"/>.
+        /// </summary>
+        [Test]
+        public void LinearGoal_LimitsTheStrainOfASquashedCluster()
+        {
+            float3x3 squashed = Diag(1f, 1e-4f, 1f);
+            float3x3 goal = VolumePreservation.LinearGoalTransform(squashed, float3x3.identity, 1f, out bool fallback);
+            Assert.That(fallback, Is.False);
+            float3x3 strain = goal - float3x3.identity;
+            float norm = math.sqrt(math.lengthsq(strain.c0) + math.lengthsq(strain.c1) + math.lengthsq(strain.c2));
+            Assert.That(norm, Is.LessThanOrEqualTo(VolumePreservation.MaxGoalStrain * (1f + 1e-6f)));
+        }
+
+        /// <summary>
+        /// Just above the determinant floor the strain has faded to nothing, so crossing the floor (where R
+        /// takes over) does not make the goals jump: the goal transform is continuous there to within the
+        /// fade's slope × the float32 step of det (~1e-7 of the 9e-6 ramp ≈ 1e-2 · 1e-6), asserted < 1e-4.
+        /// </summary>
+        [Test]
+        public void LinearGoal_IsContinuousAtTheFallback()
+        {
+            float floor = VolumePreservation.DefaultRelativeDeterminantFloor;
+            float3x3 above = VolumePreservation.LinearGoalTransform(Diag(1f, floor * 1.0001f, 1f), float3x3.identity, 1f, out bool f1);
+            VolumePreservation.LinearGoalTransform(Diag(1f, floor * 0.9999f, 1f), float3x3.identity, 1f, out bool f2);
+            Assert.That(f1, Is.False);
+            Assert.That(f2, Is.True);
+            float3x3 jump = above - float3x3.identity;
+            Assert.That(math.cmax(math.abs(jump.c0)) + math.cmax(math.abs(jump.c1)) + math.cmax(math.abs(jump.c2)), Is.LessThan(1e-4f));
         }
     }
 }
