@@ -8,6 +8,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static IReadOnlyList<IScenarioSuite> Suites { get; } = new IScenarioSuite[]
         {
             new RotationExtractionSuite(),
+            new ShapeMatchingThroughputSuite(),
+            new ShapeMatchingAccuracySuite(),
         };
     }
 }

@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Runner
 {
     /// <summary>
     /// Headless scenario runner: runs every suite of <see cref="ScenarioCatalog"/>, prints a table
-    /// (scenario, method, size, ms per step, ns per item, error metrics) and writes a Markdown
+    /// (scenario, method, size, ms per step, ns per item, items per second, error metrics) and writes a Markdown
     /// report with PNG figures.
     /// Usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT]
     /// </summary>
@@ -34,12 +34,14 @@ namespace SoftBodyDynamics.Runner
                 var suiteResult = new SuiteResult(suite);
                 Console.WriteLine();
                 Console.WriteLine($"== {suite.Name}");
-                TablePrinter.PrintHeader(Console.Out);
-                foreach (IScenario scenario in suite.Scenarios(options.Quick))
+                var scenarios = new List<IScenario>(suite.Scenarios(options.Quick));
+                var table = new TablePrinter(Console.Out, scenarios);
+                table.PrintHeader();
+                foreach (IScenario scenario in scenarios)
                 {
                     ScenarioResult r = ScenarioTimer.Run(scenario, options.Repeats);
                     suiteResult.Rows.Add(r);
-                    TablePrinter.PrintRow(Console.Out, r);
+                    table.PrintRow(r);
                 }
                 results.Add(suiteResult);
             }
@@ -91,6 +93,8 @@ namespace SoftBodyDynamics.Runner
         public long ItemsPerStep;
         public int Repeats;
         public double MedianMs, MinMs, MaxMs;
+        /// <summary>Managed bytes allocated per timed Step (should be 0).</summary>
+        public double AllocatedBytesPerStep;
         public IReadOnlyList<Metric> Metrics;
         public double NsPerItem => MedianMs * 1e6 / Math.Max(1, ItemsPerStep);
         public double ItemsPerSecond => ItemsPerStep / (MedianMs * 1e-3);

@@ -14,6 +14,8 @@ namespace SoftBodyDynamics.Runner
     {
         /// <summary>Errors of exactly 0 are drawn at this floor on log axes (and said so in the caption).</summary>
         const double k_LogFloor = 1e-12;
+        /// <summary>gnuplot point types cycled through the series: filled circle, square, triangles, diamond, pentagon.</summary>
+        static readonly int[] k_PointTypes = { 7, 5, 9, 11, 13, 15 };
 
         public static string Write(RunOptions options, List<SuiteResult> suites)
         {
@@ -24,7 +26,7 @@ namespace SoftBodyDynamics.Runner
             md.AppendLine($"- Date (UTC): {DateTime.UtcNow:yyyy-MM-dd HH:mm}");
             md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread — not Burst; Burst numbers come from the Unity Performance tests)");
-            md.AppendLine($"- Timing: median of {options.Repeats} timed steps after at least 0.3 s and 3 steps of warm-up{(options.Quick ? "; quick run (reduced sizes)" : "")}");
+            md.AppendLine($"- Timing: median of {options.Repeats} timed steps after a warm-up of at least {ScenarioTimer.WarmupSeconds} s and 3 steps that goes on (up to {ScenarioTimer.MaxWarmupSeconds} s) while the fastest step still improves{(options.Quick ? "; quick run (reduced sizes)" : "")}");
             md.AppendLine();
 
             var csv = new StringBuilder("suite,scenario,method,size,size_unit,median_ms,min_ms,max_ms,ns_per_item,items_per_s,metric,value\n");
@@ -36,11 +38,11 @@ namespace SoftBodyDynamics.Runner
                 md.AppendLine(s.Suite.Description);
                 md.AppendLine();
                 var metricNames = s.Rows.SelectMany(r => r.Metrics.Select(m => m.Name)).Distinct().ToList();
-                md.AppendLine("| method | size | ms/step | ns/item | items/s | " + string.Join(" | ", metricNames) + " |");
+                md.AppendLine("| method | size | ms/step | ns/item | items/s | " + string.Join(" | ", metricNames.Select(Cell)) + " |");
                 md.AppendLine("|---|---:|---:|---:|---:|" + string.Concat(metricNames.Select(_ => "---:|")));
                 foreach (ScenarioResult r in s.Rows)
                 {
-                    md.Append($"| {r.Method} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {r.ItemsPerSecond:0.00E+0} |");
+                    md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {r.ItemsPerSecond:0.00E+0} |");
                     foreach (string n in metricNames) md.Append($" {Format.Value(r.MetricValue(n))} |");
                     md.AppendLine();
                     foreach (var m in r.Metrics)
@@ -48,6 +50,10 @@ namespace SoftBodyDynamics.Runner
                             F(r.MedianMs), F(r.MinMs), F(r.MaxMs), F(r.NsPerItem), F(r.ItemsPerSecond), Quote(m.Name), F(m.Value)));
                 }
                 md.AppendLine();
+                foreach (ScenarioResult r in s.Rows.Where(r => r.AllocatedBytesPerStep > 0))
+                    md.AppendLine($"- **Warning:** `{r.Method}` (N = {r.Size}) allocated {r.AllocatedBytesPerStep:F0} bytes per Step.");
+                if (s.Rows.Any(r => r.AllocatedBytesPerStep > 0))
+                    md.AppendLine();
 
                 if (gnuplot)
                 {
@@ -58,7 +64,7 @@ namespace SoftBodyDynamics.Runner
                     string scaling = PlotScaling(dir, s);
                     if (scaling != null)
                         md.AppendLine($"![{s.Suite.Name}: time per item against size]({scaling})").AppendLine()
-                          .AppendLine("*Time per item against problem size: flat means cost linear in N.*").AppendLine();
+                          .AppendLine("*Time per item against problem size (log–log): flat means cost linear in N.*").AppendLine();
                 }
                 else
                 {
@@ -75,6 +81,8 @@ namespace SoftBodyDynamics.Runner
         static string PlotAccuracyVersusCost(string dir, SuiteResult s)
         {
             string metric = s.Suite.ErrorMetricForPlot;
+            // A suite without an error reference (pure throughput) names no metric and gets no accuracy figure.
+            if (string.IsNullOrEmpty(metric)) return null;
             var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
@@ -91,8 +99,10 @@ namespace SoftBodyDynamics.Runner
                     dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest} N={r.Size}\"");
                 }
                 dat.AppendLine().AppendLine();
-                plots.Add($"'{name}.dat' index {index} using 1:2 with points pt 7 ps 1.3 title '{f.Key.Replace("'", "")}'");
-                plots.Add($"'{name}.dat' index {index} using 1:2:3 with labels offset 0.8,0.5 left rotate by 20 font ',7' notitle");
+                // Explicit line type per family: the label plots would otherwise use up the colour cycle.
+                string style = $"lt {index + 1} pt {k_PointTypes[index % k_PointTypes.Length]}";
+                plots.Add($"'{name}.dat' index {index} using 1:2 with points {style} ps 1.3 title '{f.Key.Replace("'", "")}'");
+                plots.Add($"'{name}.dat' index {index} using 1:2:3 with labels offset 0.8,0.5 left rotate by 20 font ',7' tc lt {index + 1} notitle");
                 index++;
             }
             File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
@@ -104,7 +114,8 @@ set ylabel '{metric}'
 set logscale xy
 set format y '%.0e'
 set grid
-set key top right
+set key outside right top
+set offsets graph 0.02, graph 0.3, graph 0.05, graph 0.05
 plot {string.Join(", ", plots)}
 ";
             return RunGnuplot(dir, name, gp);
@@ -122,7 +133,8 @@ plot {string.Join(", ", plots)}
             {
                 foreach (var r in g.OrderBy(r => r.Size)) dat.AppendLine($"{r.Size} {F(r.NsPerItem)}");
                 dat.AppendLine().AppendLine();
-                plots.Add($"'{name}.dat' index {index++} using 1:2 with linespoints pt 7 title '{g.Key.Replace("'", "")}'");
+                plots.Add($"'{name}.dat' index {index} using 1:2 with linespoints lt {index + 1} pt {k_PointTypes[index % k_PointTypes.Length]} title '{g.Key.Replace("'", "")}'");
+                index++;
             }
             File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
             string unit = groups[0].First().SizeUnit;
@@ -131,10 +143,10 @@ set output '{name}.png'
 set title '{s.Suite.Name}: time per item against N'
 set xlabel 'N ({unit})'
 set ylabel 'ns per item (median)'
-set logscale x
-set yrange [0:*]
+set logscale xy
 set grid
-set key top left
+set key outside right top
+set offsets graph 0.05, graph 0.05, 0, 0
 plot {string.Join(", ", plots)}
 ";
             return RunGnuplot(dir, name, gp);
@@ -179,6 +191,8 @@ plot {string.Join(", ", plots)}
         }
 
         static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
+        /// <summary>Text for a Markdown table cell: a literal '|' (as in "max |det R - 1|") would end the cell.</summary>
+        static string Cell(string s) => s.Replace("|", "\\|");
         static string Quote(string s) => "\"" + s.Replace("\"", "\"\"") + "\"";
     }
 }

@@ -4,30 +4,32 @@ using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
-    /// <summary>Warm-up, then the median of repeated timed steps.</summary>
+    /// <summary>Warm-up, then the median of repeated timed steps, and the bytes those steps allocated.</summary>
     static class ScenarioTimer
     {
         /// <summary>Warm-up lasts at least this long (JIT tiering settles) and at least 3 steps.</summary>
-        const double k_WarmupSeconds = 0.3;
+        public const double WarmupSeconds = 0.3;
+        /// <summary>Warm-up goes on in rounds of at least this long (s) while the fastest step of a round still improves.</summary>
+        const double k_RoundSeconds = 0.1;
+        /// <summary>A round whose fastest step is within this fraction of the previous round's counts as settled.</summary>
+        const double k_SettledFraction = 0.03;
+        /// <summary>Warm-up never lasts longer than this (s).</summary>
+        public const double MaxWarmupSeconds = 3.0;
 
         public static ScenarioResult Run(IScenario scenario, int repeats)
         {
             scenario.Setup();
-            var sw = Stopwatch.StartNew();
-            int warm = 0;
-            while (warm < 3 || sw.Elapsed.TotalSeconds < k_WarmupSeconds)
-            {
-                scenario.Step();
-                warm++;
-            }
+            Warmup(scenario);
 
             var ms = new double[repeats];
+            long allocated0 = GC.GetAllocatedBytesForCurrentThread();
             for (int i = 0; i < repeats; i++)
             {
                 long t0 = Stopwatch.GetTimestamp();
                 scenario.Step();
                 ms[i] = (Stopwatch.GetTimestamp() - t0) * 1000.0 / Stopwatch.Frequency;
             }
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - allocated0;
             Array.Sort(ms);
             double median = repeats % 2 == 1 ? ms[repeats / 2] : 0.5 * (ms[repeats / 2 - 1] + ms[repeats / 2]);
             return new ScenarioResult
@@ -41,8 +43,41 @@ namespace SoftBodyDynamics.Runner
                 MedianMs = median,
                 MinMs = ms[0],
                 MaxMs = ms[repeats - 1],
+                AllocatedBytesPerStep = (double)allocated / repeats,
                 Metrics = scenario.Evaluate(),
             };
+        }
+
+        /// <summary>
+        /// Runs steps in rounds of at least <see cref="k_RoundSeconds"/> until at least <see cref="WarmupSeconds"/>
+        /// and 3 steps have passed and the fastest step of the last round is no more than
+        /// <see cref="k_SettledFraction"/> faster than that of the round before: the JIT tiers a method up
+        /// (tier 0, instrumented, optimised) some time after its first calls, so the first scenario that runs new
+        /// code needs longer than the others. Stops after <see cref="MaxWarmupSeconds"/> in any case.
+        /// </summary>
+        static void Warmup(IScenario scenario)
+        {
+            var total = Stopwatch.StartNew();
+            int steps = 0;
+            double previousBest = double.PositiveInfinity;
+            while (true)
+            {
+                double best = double.PositiveInfinity;
+                long roundStart = Stopwatch.GetTimestamp();
+                do
+                {
+                    long t0 = Stopwatch.GetTimestamp();
+                    scenario.Step();
+                    long t1 = Stopwatch.GetTimestamp();
+                    best = Math.Min(best, (double)(t1 - t0) / Stopwatch.Frequency);
+                    steps++;
+                } while ((double)(Stopwatch.GetTimestamp() - roundStart) / Stopwatch.Frequency < k_RoundSeconds);
+                double elapsed = total.Elapsed.TotalSeconds;
+                bool settled = best >= (1.0 - k_SettledFraction) * previousBest;
+                if (elapsed >= MaxWarmupSeconds || (steps >= 3 && elapsed >= WarmupSeconds && settled))
+                    return;
+                previousBest = best;
+            }
         }
     }
 }

@@ -1,22 +1,41 @@
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
-    /// <summary>The console table: one row per scenario, time first, then its error metrics.</summary>
-    static class TablePrinter
+    /// <summary>
+    /// The console table: one row per scenario, time first (ms per step, ns per item, items per second),
+    /// then its error metrics. Column widths fit the longest scenario and method names of the suite.
+    /// </summary>
+    sealed class TablePrinter
     {
-        public static void PrintHeader(TextWriter w)
+        readonly TextWriter m_Writer;
+        readonly int m_NameWidth, m_MethodWidth;
+
+        public TablePrinter(TextWriter writer, IEnumerable<IScenario> scenarios)
         {
-            w.WriteLine($"{"scenario",-20} {"method",-16} {"size",9} {"ms/step",10} {"ns/item",9}  error metrics");
-            w.WriteLine(new string('-', 110));
+            m_Writer = writer;
+            m_NameWidth = System.Math.Max(20, scenarios.Select(s => s.Name.Length).DefaultIfEmpty(0).Max());
+            m_MethodWidth = System.Math.Max(16, scenarios.Select(s => s.Method.Length).DefaultIfEmpty(0).Max());
         }
 
-        public static void PrintRow(TextWriter w, ScenarioResult r)
+        public void PrintHeader()
+        {
+            m_Writer.WriteLine($"{Pad("scenario", m_NameWidth)} {Pad("method", m_MethodWidth)} {"size",9} {"ms/step",10} {"ns/item",9} {"items/s",9}  error metrics");
+            m_Writer.WriteLine(new string('-', m_NameWidth + m_MethodWidth + 52 + 40));
+        }
+
+        public void PrintRow(ScenarioResult r)
         {
             string metrics = string.Join("  ", r.Metrics.Select(m => $"{m.Name}={Format.Value(m.Value)}{m.Unit}"));
-            w.WriteLine($"{r.Name,-20} {r.Method,-16} {r.Size,9} {r.MedianMs,10:F3} {r.NsPerItem,9:F1}  {metrics}");
+            m_Writer.WriteLine($"{Pad(r.Name, m_NameWidth)} {Pad(r.Method, m_MethodWidth)} {r.Size,9} {r.MedianMs,10:F3} {r.NsPerItem,9:F1} {Format.Rate(r.ItemsPerSecond),9}  {metrics}");
+            if (r.AllocatedBytesPerStep > 0)
+                m_Writer.WriteLine($"  warning: Step allocated {r.AllocatedBytesPerStep:F0} bytes per call (scenarios must not allocate in Step)");
         }
+
+        static string Pad(string s, int width) => s.PadRight(width);
     }
 
     static class Format
@@ -29,5 +48,9 @@ namespace SoftBodyDynamics.Runner
             double a = System.Math.Abs(v);
             return a >= 1e-2 && a < 1e4 ? v.ToString("0.###") : v.ToString("0.00E+0");
         }
+
+        /// <summary>A rate in items per second with three significant digits, e.g. 2.45E+7.</summary>
+        public static string Rate(double v) =>
+            double.IsInfinity(v) || double.IsNaN(v) ? v.ToString() : v.ToString("0.00E+0");
     }
 }
