@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: runs every benchmark scenario headless, prints the table (scenario, method, size,
-# ms per step, ns per item, error metrics) and writes a Markdown report with PNG figures.
+# ms per step, ns per item, items per second, error metrics) and writes a Markdown report with PNG figures.
 # Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT]
 # Default report folder: Reports~/latest (relative to the package root).
 set -euo pipefail

@@ -50,7 +50,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         string Description { get; }
         /// <summary>Scenarios of the full run.</summary>
         IEnumerable<IScenario> Scenarios(bool quick);
-        /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure.</summary>
+        /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure; null for a suite without an error reference (no such figure).</summary>
         string ErrorMetricForPlot { get; }
     }
 }
