@@ -70,9 +70,7 @@ namespace SoftBodyDynamics.Solvers
                     for (int k = start; k < end; k++)
                     {
                         int i = model.ClusterParticles[k];
-                        float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
-                        if (usePlastic)
-                            q = math.mul(sp, q);
+                        float3 q = RestOffset(model.RestPositions[i], cluster.Rest.RestCenter, sp, usePlastic);
                         apq += model.ClusterWeights[k] * Matrix3.Outer(x[i] - center, q);
                     }
                     int iterations = RotationExtraction.Extract(apq, ref cluster.Rotation, p.RotationIterations);
@@ -126,9 +124,7 @@ namespace SoftBodyDynamics.Solvers
             for (int k = start; k < end; k++)
             {
                 int i = model.ClusterParticles[k];
-                float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
-                if (usePlastic)
-                    q = math.mul(sp, q);
+                float3 q = RestOffset(model.RestPositions[i], cluster.Rest.RestCenter, sp, usePlastic);
                 QuadraticShapeMatching.Lift(q * invL, cluster.Rest, out float3 a, out float3 b, out float3 cr);
                 float3 wp = model.ClusterWeights[k] * invL * (x[i] - center);
                 p0 += Matrix3.Outer(wp, a);
@@ -150,14 +146,17 @@ namespace SoftBodyDynamics.Solvers
             for (int k = start; k < end; k++)
             {
                 int i = model.ClusterParticles[k];
-                float3 q = model.RestPositions[i] - cluster.Rest.RestCenter;
-                if (usePlastic)
-                    q = math.mul(sp, q);
+                float3 q = RestOffset(model.RestPositions[i], cluster.Rest.RestCenter, sp, usePlastic);
                 QuadraticShapeMatching.Lift(q * invL, cluster.Rest, out float3 a, out float3 b, out float3 cr);
                 float3 g = center + length * (math.mul(g0, a) + math.mul(g1, b) + math.mul(g2, cr));
                 goals[i] += model.InverseClusterCounts[i] * g;
             }
         }
+
+        /// <summary>qᵢ = Sₚ (x⁰ᵢ − x⁰_cm), skipping the product while the cluster has not flowed (Sₚ = I).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        static float3 RestOffset(float3 rest, float3 restCenter, in float3x3 sp, bool usePlastic) =>
+            usePlastic ? math.mul(sp, rest - restCenter) : rest - restCenter;
 
         static float SquaredNorm(in float3x3 m) => math.lengthsq(m.c0) + math.lengthsq(m.c1) + math.lengthsq(m.c2);
 
