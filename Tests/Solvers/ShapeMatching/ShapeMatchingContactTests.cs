@@ -153,5 +153,33 @@ namespace SoftBodyDynamics.Tests.Solvers
             else
                 Assert.That(apex, Is.LessThan(1e-3f));
         }
+
+        /// <summary>
+        /// A step 30 times the usual (0.5 s, 125 ms per substep) must not blow up: goals are reached by a
+        /// fraction α ≤ 1 of the way, so the pull cannot overshoot, and the floor is a half-space. The body
+        /// stays finite, outside the floor, and far slower than an exploding body would be.
+        /// </summary>
+        [TestCase(ShapeMatchingMode.Rigid)]
+        [TestCase(ShapeMatchingMode.Linear)]
+        [TestCase(ShapeMatchingMode.Quadratic)]
+        public void HugeStep_StaysFiniteAndOutOfTheFloor(ShapeMatchingMode mode)
+        {
+            var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f, mode == ShapeMatchingMode.Quadratic);
+            var p = ShapeMatchingParameters.Default;
+            p.Mode = mode;
+            var body = new ShapeMatchingInstance(model, p, new float3(0f, 3f, 0f), quaternion.AxisAngle(new float3(1f, 0f, 0f), 0.5f));
+            var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
+            const float dt = 0.5f;
+            for (int step = 0; step < 20; step++)
+            {
+                Assert.That(body.Step(dt, floor).Reset, Is.False, $"step {step}");
+                foreach (float3 x in body.Positions)
+                    Assert.That(x.y, Is.GreaterThanOrEqualTo(p.ParticleRadius - k_Tolerance));
+                // A loose bound that catches an explosion: no particle faster than ten steps of free fall
+                // (the body falls 3 m, reaching √(2g·3) ≈ 1.6 g·dt, and the pull only redistributes momentum).
+                foreach (float3 v in body.Velocities)
+                    Assert.That(math.length(v), Is.LessThan(10f * 9.81f * dt));
+            }
+        }
     }
 }
