@@ -57,10 +57,40 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public static double VolumeRatio(ReadOnlySpan<float3> x, in ShapeMatchingModel model)
         {
-            Vector3d c = Center(x, model.Masses);
-            Vector3d r = Center(model.RestPositions, model.Masses);
-            var apq = new double[3, 3];
-            var aqq = new double[3, 3];
+            Moments(x, model, out _, out _, out double[,] apq, out double[,] aqq);
+            return Determinant(apq) / Determinant(aqq);
+        }
+
+        /// <summary>
+        /// RMS distance (m) of the particles from the rest shape placed at its best fit (centre of mass
+        /// and the float64 SVD rotation of A_pq): 0 when the body has exactly its rest shape.
+        /// </summary>
+        public static double ShapeError(ReadOnlySpan<float3> x, in ShapeMatchingModel model)
+        {
+            Moments(x, model, out Vector3d c, out Vector3d r, out double[,] apq, out _);
+            double[,] rot = Svd3x3Double.Decompose(apq).Rotation;
+            double sum = 0, mass = 0;
+            for (int i = 0; i < x.Length; i++)
+            {
+                Vector3d q = (Vector3d)model.RestPositions[i] - r;
+                Vector3d goal = c + new Vector3d(
+                    rot[0, 0] * q.X + rot[0, 1] * q.Y + rot[0, 2] * q.Z,
+                    rot[1, 0] * q.X + rot[1, 1] * q.Y + rot[1, 2] * q.Z,
+                    rot[2, 0] * q.X + rot[2, 1] * q.Y + rot[2, 2] * q.Z);
+                sum += model.Masses[i] * ((Vector3d)x[i] - goal).LengthSquared;
+                mass += model.Masses[i];
+            }
+            return Math.Sqrt(sum / mass);
+        }
+
+        /// <summary>Centres of the current (c) and rest (r) shapes, A_pq and A_qq of the whole body, in float64.</summary>
+        static void Moments(ReadOnlySpan<float3> x, in ShapeMatchingModel model, out Vector3d c, out Vector3d r,
+            out double[,] apq, out double[,] aqq)
+        {
+            c = Center(x, model.Masses);
+            r = Center(model.RestPositions, model.Masses);
+            apq = new double[3, 3];
+            aqq = new double[3, 3];
             for (int i = 0; i < x.Length; i++)
             {
                 Vector3d p = (Vector3d)x[i] - c, q = (Vector3d)model.RestPositions[i] - r;
@@ -71,39 +101,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     aqq[a, b] += model.Masses[i] * q[a] * q[b];
                 }
             }
-            return Determinant(apq) / Determinant(aqq);
-        }
-
-        /// <summary>
-        /// RMS distance (m) of the particles from the rest shape placed at its best fit (centre of mass
-        /// and the float64 SVD rotation of A_pq): 0 when the body has exactly its rest shape.
-        /// </summary>
-        public static double ShapeError(ReadOnlySpan<float3> x, in ShapeMatchingModel model)
-        {
-            Vector3d c = Center(x, model.Masses);
-            Vector3d r = Center(model.RestPositions, model.Masses);
-            var apq = new double[3, 3];
-            double mass = 0;
-            for (int i = 0; i < x.Length; i++)
-            {
-                Vector3d p = (Vector3d)x[i] - c, q = (Vector3d)model.RestPositions[i] - r;
-                mass += model.Masses[i];
-                for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++)
-                    apq[a, b] += model.Masses[i] * p[a] * q[b];
-            }
-            double[,] rot = Svd3x3Double.Decompose(apq).Rotation;
-            double sum = 0;
-            for (int i = 0; i < x.Length; i++)
-            {
-                Vector3d q = (Vector3d)model.RestPositions[i] - r;
-                Vector3d goal = c + new Vector3d(
-                    rot[0, 0] * q.X + rot[0, 1] * q.Y + rot[0, 2] * q.Z,
-                    rot[1, 0] * q.X + rot[1, 1] * q.Y + rot[1, 2] * q.Z,
-                    rot[2, 0] * q.X + rot[2, 1] * q.Y + rot[2, 2] * q.Z);
-                sum += model.Masses[i] * ((Vector3d)x[i] - goal).LengthSquared;
-            }
-            return Math.Sqrt(sum / mass);
         }
 
         /// <summary>Largest extent of the rest shape (m): the length errors are measured against.</summary>

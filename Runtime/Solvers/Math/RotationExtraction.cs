@@ -87,14 +87,6 @@ namespace SoftBodyDynamics.Solvers
             return iterations;
         }
 
-        /// <summary>Rotation matrix form of <see cref="Extract"/>.</summary>
-        public static float3x3 ExtractMatrix(in float3x3 a, ref quaternion q, int maxIterations = DefaultMaxIterations,
-            float tolerance = DefaultTolerance)
-        {
-            Extract(a, ref q, maxIterations, tolerance);
-            return new float3x3(q);
-        }
-
         /// <summary>
         /// Iterates q ← exp(θ) q on a normalised A until Müller's |ω| = |g| / |tr S| &lt; tolerance. The gradient of
         /// f(θ) = tr((exp([θ]) R)ᵀ A) is g = Σᵢ rᵢ × aᵢ (the numerator of Müller et al. 2016, eq. 7)

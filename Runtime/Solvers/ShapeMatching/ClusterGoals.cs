@@ -54,8 +54,8 @@ namespace SoftBodyDynamics.Solvers
                 if (p.Mode == ShapeMatchingMode.Quadratic && !quadratic)
                     counters.Fallbacks++;
 
-                float3x3 aLinear;
-                float3x3 r;
+                // Plastic flow needs R and A = A_pq A_qq⁻¹ of this substep.
+                float3x3 aLinear, r;
                 if (quadratic)
                 {
                     QuadraticGoals(model, p, state, x, c, start, end, center, sp, usePlastic, ref cluster, quadraticInverse.Length > 0
@@ -73,19 +73,15 @@ namespace SoftBodyDynamics.Solvers
                         float3 q = RestOffset(model.RestPositions[i], cluster.Rest.RestCenter, sp, usePlastic);
                         apq += model.ClusterWeights[k] * Matrix3.Outer(x[i] - center, q);
                     }
-                    int iterations = RotationExtraction.Extract(apq, ref cluster.Rotation, p.RotationIterations);
+                    // A quadratic body whose cluster fell back uses the linear mode here.
+                    var mode = p.Mode == ShapeMatchingMode.Rigid ? ShapeMatchingMode.Rigid : ShapeMatchingMode.Linear;
+                    float3x3 t = ShapeMatching.GoalTransform(apq, cluster.Rest, mode, p.Beta, ref cluster.Rotation,
+                        p.RotationIterations, out int iterations, out bool fallback);
                     counters.MaxIterations = math.max(counters.MaxIterations, iterations);
+                    if (fallback && p.Mode == ShapeMatchingMode.Linear)
+                        counters.Fallbacks++;
                     r = new float3x3(cluster.Rotation);
-                    aLinear = cluster.Rest.LinearValid ? math.mul(apq, cluster.Rest.AqqInverse) : r;
-                    float3x3 t = r;
-                    if (p.Mode != ShapeMatchingMode.Rigid)
-                    {
-                        bool fallback = !cluster.Rest.LinearValid;
-                        if (!fallback)
-                            t = VolumePreservation.LinearGoalTransform(aLinear, r, p.Beta, out fallback);
-                        if (fallback && p.Mode == ShapeMatchingMode.Linear)
-                            counters.Fallbacks++;
-                    }
+                    aLinear = plastic && cluster.Rest.LinearValid ? math.mul(apq, cluster.Rest.AqqInverse) : r;
                     // Eq. 9: gᵢ = T qᵢ + x_cm, averaged over the clusters of particle i.
                     if (usePlastic)
                         t = math.mul(t, sp);

@@ -11,23 +11,6 @@ namespace SoftBodyDynamics.Solvers
     public static class RigidMotionDamping
     {
         /// <summary>
-        /// Adds the rigid spin δω × (xᵢ − x_cm) with I δω = <paramref name="angularMomentum"/> (I about the
-        /// centre of mass of <paramref name="x"/>): changes angular momentum by exactly that amount and
-        /// linear momentum not at all.
-        /// </summary>
-        public static void AddSpin(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float3 angularMomentum)
-        {
-            if (math.all(angularMomentum == float3.zero))
-                return;
-            float3 xcm = ShapeMatching.CenterOfMass(x, mass);
-            float3 omega = math.mul(InverseInertia(x, mass, xcm), angularMomentum);
-            if (!math.all(math.isfinite(omega)))
-                return;
-            for (int i = 0; i < x.Length; i++)
-                v[i] += math.cross(omega, x[i] - xcm);
-        }
-
-        /// <summary>
         /// (I + 10⁻⁶ tr I · 1)⁻¹ about <paramref name="xcm"/>: a rod or a point has a singular inertia
         /// tensor, and the tiny shift keeps ω finite. Zero for a body of zero extent.
         /// </summary>

@@ -86,14 +86,21 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// The goal transform T of a cluster (goals gᵢ = T qᵢ + x_cm). <paramref name="rotation"/> is
-        /// the warm start in and the extracted rotation out. <paramref name="rigidFallback"/> is set
-        /// when the linear mode had to use R (planar rest shape, or a degenerate or inverted Ã).
+        /// The goal transform T of a cluster (goals gᵢ = T qᵢ + x_cm) for the rigid or linear mode.
+        /// <paramref name="rotation"/> is the warm start in and the extracted rotation out.
+        /// <paramref name="rigidFallback"/> is set when the linear mode had to use R (planar rest shape,
+        /// or a degenerate or inverted Ã).
         /// </summary>
         public static float3x3 GoalTransform(in float3x3 apq, in ClusterRestData rest, ShapeMatchingMode mode, float beta,
-            ref quaternion rotation, out bool rigidFallback)
+            ref quaternion rotation, out bool rigidFallback) =>
+            GoalTransform(apq, rest, mode, beta, ref rotation, RotationExtraction.DefaultMaxIterations, out _, out rigidFallback);
+
+        /// <summary>As above, with the rotation's iteration cap and the iterations it took.</summary>
+        public static float3x3 GoalTransform(in float3x3 apq, in ClusterRestData rest, ShapeMatchingMode mode, float beta,
+            ref quaternion rotation, int maxIterations, out int iterations, out bool rigidFallback)
         {
-            float3x3 r = RotationExtraction.ExtractMatrix(apq, ref rotation);
+            iterations = RotationExtraction.Extract(apq, ref rotation, maxIterations);
+            float3x3 r = new float3x3(rotation);
             rigidFallback = false;
             if (mode == ShapeMatchingMode.Rigid)
                 return r;

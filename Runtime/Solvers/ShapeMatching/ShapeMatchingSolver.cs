@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Solvers
                 report.WokeUp = true;
             }
             // Bad input (written from outside since the last step) is caught before it spreads, with its index.
-            int badInput = FindBadParticle(state.Positions, state.Velocities, p.MaxSpeed, out _);
+            int badInput = FindBadParticle(state.Positions, state.Velocities, p.MaxSpeed);
             if (badInput >= 0)
             {
                 ResetToLastGoodPlacement(model, state, badInput, ref status, ref report);
@@ -103,7 +103,7 @@ namespace SoftBodyDynamics.Solvers
                     RigidMotionDamping.Apply(x, v, model.Masses, damping, state.Goals);
             }
 
-            int bad = FindBadParticle(x, v, p.MaxSpeed, out _);
+            int bad = FindBadParticle(x, v, p.MaxSpeed);
             if (bad >= 0)
             {
                 ResetToLastGoodPlacement(model, state, bad, ref status, ref report);
@@ -228,17 +228,14 @@ namespace SoftBodyDynamics.Solvers
         static void UpdatePlacement(in ShapeMatchingModel model, ReadOnlySpan<float3> x, ref SoftBodyStatus status)
         {
             float3 center = ShapeMatching.CenterOfMass(x, model.Masses);
-            float3x3 apq = float3x3.zero;
-            for (int i = 0; i < x.Length; i++)
-                apq += model.Masses[i] * Matrix3.Outer(x[i] - center, model.RestPositions[i] - model.BodyRest.RestCenter);
+            float3x3 apq = ShapeMatching.Apq(x, model.Masses, center, model.RestPositions, model.BodyRest.RestCenter);
             RotationExtraction.Extract(apq, ref status.Rotation);
             status.Center = center;
         }
 
-        /// <summary>First particle with a non-finite or absurd position or velocity, or −1; also the largest |v|².</summary>
-        static int FindBadParticle(ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, float maxSpeed, out float maxSpeedSq)
+        /// <summary>First particle with a non-finite or absurd position or velocity, or −1.</summary>
+        static int FindBadParticle(ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, float maxSpeed)
         {
-            maxSpeedSq = 0f;
             float speedLimitSq = maxSpeed * maxSpeed;
             const float positionLimitSq = PositionLimit * PositionLimit;
             for (int i = 0; i < x.Length; i++)
@@ -247,7 +244,6 @@ namespace SoftBodyDynamics.Solvers
                 // Written so that NaN fails every comparison and is caught.
                 if (!(s2 <= speedLimitSq) || !(math.lengthsq(x[i]) <= positionLimitSq))
                     return i;
-                maxSpeedSq = math.max(maxSpeedSq, s2);
             }
             return -1;
         }

@@ -43,7 +43,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
-        public void EveryParticle_GoalIsTheAverageOfItsClusters()
+        public void ClusterWeights_SplitEachParticlesMassOverItsClusters()
         {
             var model = LatticeBody.Create(new int3(6, 3, 3), 0.1f, 3, 1f);
             Assert.That(model.ClusterCount, Is.GreaterThan(1));

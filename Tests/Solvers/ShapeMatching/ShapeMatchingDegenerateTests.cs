@@ -8,9 +8,10 @@ namespace SoftBodyDynamics.Tests.Solvers
     /// <summary>
     /// Degenerate rest shapes (stability plan #5): every particle at one point, a planar cloth, a
     /// collinear rope. A_qq is singular, so linear and quadratic modes fall back, and nothing may blow
-    /// up. Bound: shape matching only moves particles toward goals that lie in the convex span of a
-    /// rigid copy of the rest shape, so no particle can exceed its initial speed plus what gravity
-    /// adds: max |v| ≤ max |v₀| + g·t (the plan's criterion), with 1e-4 m/s for float32 round-off.
+    /// up. Bound: the plan's criterion max |v| ≤ max |v₀| + g·t, plus 1e-4 m/s for float32 round-off.
+    /// It is a heuristic, not a theorem (the pull can move speed between particles), kept because the
+    /// failures it guards against — NaN or an Inf-sized goal from a singular A_qq — exceed it by orders
+    /// of magnitude.
     /// </summary>
     public class ShapeMatchingDegenerateTests
     {

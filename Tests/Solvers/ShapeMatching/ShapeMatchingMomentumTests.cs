@@ -7,12 +7,11 @@ namespace SoftBodyDynamics.Tests.Solvers
 {
     /// <summary>
     /// Momentum of free bodies (stability plan #3). Shape matching moves each cluster's particles by
-    /// α(gᵢ − xᵢ) with weights wᵢ = mᵢ/nᵢ about the weighted centre, so Σ mᵢ Δxᵢ = 0 exactly, and for an
-    /// exact polar rotation Σ wᵢ pᵢ × R qᵢ = axial(skew(A_pq Rᵀ)) = 0 (stability-plan §2.1), so rigid
-    /// mode conserves angular momentum too. Tolerances (the plan's): float32 sums of ~10² terms carry
-    /// ~10 ε ≈ 1e-6 relative per step, accumulating as a random walk over 1000 steps to ~3e-5 in the
-    /// worst case but ~1e-6 typically; the plan's 1e-5 on |ΔP|/Σm|v| and 1e-3 on |ΔL|/|L₀| (which also
-    /// absorbs the rotation's 1e-6 stopping tolerance × 4000 substeps) are asserted.
+    /// α(gᵢ − xᵢ) with weights wᵢ = mᵢ/nᵢ about the weighted centre, so Σ mᵢ Δxᵢ = 0, and for an exact
+    /// polar rotation Σ wᵢ pᵢ × R qᵢ = axial(skew(A_pq Rᵀ)) = 0 (stability-plan §2.1). The solver also
+    /// removes the float32 residue of both sums from every pull, so what remains is the round-off of the
+    /// velocity increments themselves (a few ulp of |v| per particle and substep, unbiased). The plan's
+    /// thresholds are asserted: |ΔP|/Σm|v| ≤ 1e-5 and |ΔL|/|L₀| ≤ 1e-3 over 1000 steps.
     /// </summary>
     public class ShapeMatchingMomentumTests
     {
