@@ -41,16 +41,5 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public ShapeMatchingStepReport Step(float dt, ReadOnlySpan<ColliderShape> colliders = default) =>
             ShapeMatchingSolver.Step(Model.AsModel(), Parameters, colliders, dt, State, ref Status);
-
-        public float TotalMass
-        {
-            get
-            {
-                float m = 0f;
-                foreach (float mi in Model.Masses)
-                    m += mi;
-                return m;
-            }
-        }
     }
 }
