@@ -10,8 +10,7 @@ namespace SoftBodyDynamics.Benchmarks
     /// Cost of <see cref="RotationExtraction.Extract"/> in Unity, on the same scenario the headless runner times
     /// (<see cref="RotationExtractionScenario"/>: seeded clusters from every hard-case family), warm-started from
     /// the previous step's rotation and cold-started from identity. One measurement is one scenario step, so
-    /// each sample is the time of <see cref="k_MatrixCount"/> extractions (with a fixed MeasurementCount the
-    /// package records the total time of IterationsPerMeasurement calls, not their mean).
+    /// each sample is the time of <see cref="k_MatrixCount"/> extractions.
     /// This runs the managed build of the solver; Burst-compiled timings belong to the job benchmarks.
     /// </summary>
     public class RotationExtractionPerformanceTests
@@ -19,7 +18,6 @@ namespace SoftBodyDynamics.Benchmarks
         const int k_MatrixCount = 1000;
         const int k_WarmupCount = 10;
         const int k_MeasurementCount = 30;
-        const int k_IterationsPerMeasurement = 1;
 
         [Test, Performance]
         public void RotationExtraction_WarmStart_1000Matrices() => MeasureScenario(RotationStart.Warm, "warm");
@@ -27,17 +25,11 @@ namespace SoftBodyDynamics.Benchmarks
         [Test, Performance]
         public void RotationExtraction_ColdStart_1000Matrices() => MeasureScenario(RotationStart.Cold, "cold");
 
-        static void MeasureScenario(RotationStart start, string label)
-        {
-            var scenario = new RotationExtractionScenario(k_MatrixCount, start, RotationExtraction.DefaultMaxIterations);
-            scenario.Setup();
-            Measure.Method(scenario.Step)
-                .WarmupCount(k_WarmupCount)
-                .MeasurementCount(k_MeasurementCount)
-                .IterationsPerMeasurement(k_IterationsPerMeasurement)
-                .SampleGroup(new SampleGroup($"RotationExtraction.Extract {label} x{k_MatrixCount}", SampleUnit.Microsecond))
-                .Run();
-        }
+        static void MeasureScenario(RotationStart start, string label) =>
+            ScenarioMeasure.Steps(
+                new RotationExtractionScenario(k_MatrixCount, start, RotationExtraction.DefaultMaxIterations),
+                new SampleGroup($"RotationExtraction.Extract {label} x{k_MatrixCount}", SampleUnit.Microsecond),
+                k_WarmupCount, k_MeasurementCount);
     }
 }
 #endif

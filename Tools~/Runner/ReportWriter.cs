@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Runner
                 md.AppendLine("|---|---:|---:|---:|---:|" + string.Concat(metricNames.Select(_ => "---:|")));
                 foreach (ScenarioResult r in s.Rows)
                 {
-                    md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {r.ItemsPerSecond:0.00E+0} |");
+                    md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {Format.Rate(r.ItemsPerSecond)} |");
                     foreach (string n in metricNames) md.Append($" {Format.Value(r.MetricValue(n))} |");
                     md.AppendLine();
                     foreach (var m in r.Metrics)

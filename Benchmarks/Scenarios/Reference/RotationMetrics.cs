@@ -38,10 +38,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 return e;
             }
 
-            double det = rd[0, 0] * (rd[1, 1] * rd[2, 2] - rd[1, 2] * rd[2, 1])
-                       - rd[0, 1] * (rd[1, 0] * rd[2, 2] - rd[1, 2] * rd[2, 0])
-                       + rd[0, 2] * (rd[1, 0] * rd[2, 1] - rd[1, 1] * rd[2, 0]);
-            e.Determinant = Math.Abs(det - 1.0);
+            e.Determinant = Math.Abs(Svd3x3Double.Determinant(rd) - 1.0);
 
             double orth = 0, aNorm = 0, skew = 0;
             for (int i = 0; i < 3; i++)

@@ -79,8 +79,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             if (known == 2)
                 SetColumn(u, 2, Cross(Column(u, 0), Column(u, 1)));
 
-            double detA = Det(a);
-            double d = Math.Sign(Det(u) * Det(vs));
+            double detA = Determinant(a);
+            double d = Math.Sign(Determinant(u) * Determinant(vs));
             var dm = new double[,] { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, d == 0 ? 1 : d } };
             var rot = Mul(Mul(u, dm), Transpose(vs));
             return new Result
@@ -100,6 +100,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     t += rd[k, i] * a[k, i];
             return t;
         }
+
+        /// <summary>det M of a 3×3 matrix, in float64.</summary>
+        public static double Determinant(double[,] m) =>
+            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1])
+            - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
+            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
 
         public static quaternion RotationQuaternion(in Result res)
         {
@@ -159,10 +165,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double l = Math.Sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
             return new[] { a[0] / l, a[1] / l, a[2] / l };
         }
-        static double Det(double[,] m) =>
-            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1])
-            - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
-            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
         static double[,] Transpose(double[,] m)
         {
             var t = new double[3, 3];

@@ -73,7 +73,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var gaps = new double[Size];
             double maxDet = 0, maxOrth = 0;
             int nonFinite = 0;
-            var its = new int[Size];
             for (int i = 0; i < Size; i++)
             {
                 RotationError e = RotationMetrics.Evaluate(m_A[i], m_Q[i]);
@@ -81,8 +80,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 maxDet = Math.Max(maxDet, e.Determinant);
                 maxOrth = Math.Max(maxOrth, e.Orthonormality);
                 gaps[i] = Math.Max(0.0, e.ObjectiveGap);
-                its[i] = m_Iterations[i];
             }
+            // Iterations of every case, a failed one included: it spent them too.
+            var its = (int[])m_Iterations.Clone();
             Array.Sort(gaps);
             Array.Sort(its);
             double meanIt = 0;

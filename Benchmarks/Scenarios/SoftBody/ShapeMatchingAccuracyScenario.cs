@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         public string Name => "ShapeMatchingAccuracy";
-        public string Method => $"{ShapeMatchingBenchmarkBody.ModeLabel(m_Mode)} ({ShapeMatchingBenchmarkBody.LayoutLabel(m_Layout)}), {m_Substeps} substeps";
+        public string Method => $"{ShapeMatchingBenchmarkBody.Label(m_Mode, m_Layout)}, {m_Substeps} substeps";
         public int Size => Edge * Edge * Edge;
         public string SizeUnit => "particles";
         /// <summary>Particle-steps per step: the particle count (substeps are part of the cost of one item).</summary>
@@ -48,10 +48,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Setup()
         {
             m_Model = ShapeMatchingBenchmarkBody.Lattice(Edge, BodySize, m_Layout, m_Mode);
-            m_Parameters = ShapeMatchingBenchmarkBody.Parameters(m_Mode, m_Substeps, float3.zero, 0.5f * Spacing);
+            m_Parameters = ShapeMatchingBenchmarkBody.Parameters(m_Mode, m_Substeps, float3.zero,
+                ShapeMatchingBenchmarkBody.ParticleRadius(Edge, BodySize));
             m_Body = new ShapeMatchingInstance(m_Model, m_Parameters, float3.zero, quaternion.identity);
-            SquashRecovery.Squash(m_Body);
-            m_StepsSinceSquash = 0;
+            m_StepsSinceSquash = SquashRecovery.StepsTo2s; // the first Step squashes the body
         }
 
         public void Step()

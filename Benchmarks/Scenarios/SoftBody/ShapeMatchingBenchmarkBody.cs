@@ -27,6 +27,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Distance between neighbouring lattice points (m).</summary>
         public static float Spacing(int edge, float size) => size / math.max(1, edge - 1);
 
+        /// <summary>Particle radius of every benchmark body (m): half the spacing, so neighbouring particles touch.</summary>
+        public static float ParticleRadius(int edge, float size) => 0.5f * Spacing(edge, size);
+
         /// <summary>Stiffness α of every benchmark body (the default jelly's).</summary>
         public const float Stiffness = 0.2f;
         /// <summary>Blend β of the linear or quadratic transform (the default jelly's).</summary>
@@ -41,8 +44,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>
         /// The default jelly's settings, pinned here so the benchmarks measure the same body when the defaults
         /// change (α = 0.2, β = 0.5, damping 1/s, friction 0.5, restitution 0.1, no plasticity), with the given
-        /// mode, substeps and acceleration (m/s²), a particle radius of half the spacing (m), and no sleeping,
-        /// so every step does the full work.
+        /// mode, substeps, acceleration (m/s²) and particle radius (m, <see cref="ParticleRadius"/>), and no
+        /// sleeping, so every step does the full work.
         /// </summary>
         public static ShapeMatchingParameters Parameters(ShapeMatchingMode mode, int substeps, float3 acceleration, float particleRadius)
         {
@@ -72,5 +75,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>"1 cluster" or "4^3 clusters".</summary>
         public static string LayoutLabel(ShapeMatchingClusterLayout layout) =>
             layout == ShapeMatchingClusterLayout.Single ? "1 cluster" : $"{ClusterEdge}^3 clusters";
+
+        /// <summary>The method column of every shape-matching scenario, e.g. "linear (4^3 clusters)".</summary>
+        public static string Label(ShapeMatchingMode mode, ShapeMatchingClusterLayout layout) =>
+            $"{ModeLabel(mode)} ({LayoutLabel(layout)})";
     }
 }

@@ -40,7 +40,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         public string Name => "ShapeMatchingThroughput";
-        public string Method => $"{ShapeMatchingBenchmarkBody.ModeLabel(m_Mode)} ({ShapeMatchingBenchmarkBody.LayoutLabel(m_Layout)})";
+        public string Method => ShapeMatchingBenchmarkBody.Label(m_Mode, m_Layout);
         public int Size => m_Edge * m_Edge * m_Edge;
         public string SizeUnit => "particles";
         /// <summary>Particle-iterations per step: particles × substeps.</summary>
@@ -49,7 +49,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Setup()
         {
             ShapeMatchingModelData model = ShapeMatchingBenchmarkBody.Lattice(m_Edge, BodySize, m_Layout, m_Mode);
-            float radius = 0.5f * ShapeMatchingBenchmarkBody.Spacing(m_Edge, BodySize);
+            float radius = ShapeMatchingBenchmarkBody.ParticleRadius(m_Edge, BodySize);
             var p = ShapeMatchingBenchmarkBody.Parameters(m_Mode, Substeps, new float3(0f, -9.81f, 0f), radius);
             // The bottom layer touches the floor from the first step: contacts every substep.
             m_Start = new float3(0f, 0.5f * BodySize + radius, 0f);

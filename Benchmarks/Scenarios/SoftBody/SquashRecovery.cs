@@ -17,8 +17,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// single sample can miss when it falls near a zero crossing.
         /// </summary>
         public double MaxShapeErrorFrom1sTo2s;
-        /// <summary>Shape error right after the squash (dimensionless): what recovery starts from.</summary>
-        public double InitialShapeError;
         /// <summary>Steps the NaN guard reset (0 expected).</summary>
         public int Resets;
     }
@@ -57,7 +55,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ShapeMatchingModel view = model.AsModel();
             double size = BodyMeasures.RestSize(view);
             Squash(body);
-            var result = new SquashRecoveryResult { InitialShapeError = BodyMeasures.ShapeError(body.Positions, view) / size };
+            var result = new SquashRecoveryResult();
             for (int step = 1; step <= StepsTo2s; step++)
             {
                 ShapeMatchingStepReport report = body.Step(ShapeMatchingBenchmarkBody.TimeStep);
