@@ -58,7 +58,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static double VolumeRatio(ReadOnlySpan<float3> x, in ShapeMatchingModel model)
         {
             Moments(x, model, out _, out _, out double[,] apq, out double[,] aqq);
-            return Determinant(apq) / Determinant(aqq);
+            return Svd3x3Double.Determinant(apq) / Svd3x3Double.Determinant(aqq);
         }
 
         /// <summary>
@@ -114,11 +114,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             return math.cmax(hi - lo);
         }
-
-        static double Determinant(double[,] a) =>
-            a[0, 0] * (a[1, 1] * a[2, 2] - a[1, 2] * a[2, 1])
-            - a[0, 1] * (a[1, 0] * a[2, 2] - a[1, 2] * a[2, 0])
-            + a[0, 2] * (a[1, 0] * a[2, 1] - a[1, 1] * a[2, 0]);
     }
 
     /// <summary>A float64 3-vector for measurements.</summary>

@@ -33,8 +33,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Predicted = new float3[n];
             m_Goals = new float3[n];
             m_Normals = new float3[n];
-            ShapeMatchingSolver.Initialize(model.AsModel(), State, position, rotation, velocity, out Status);
+            Reset(position, rotation, velocity);
         }
+
+        /// <summary>Back to the rest shape at a placement, moving uniformly (clusters and sleep state reset too).</summary>
+        public void Reset(float3 position, quaternion rotation, float3 velocity = default) =>
+            ShapeMatchingSolver.Initialize(Model.AsModel(), State, position, rotation, velocity, out Status);
 
         public ShapeMatchingState State =>
             new ShapeMatchingState(Positions, Velocities, Clusters, QuadraticInverse, m_Predicted, m_Goals, m_Normals);

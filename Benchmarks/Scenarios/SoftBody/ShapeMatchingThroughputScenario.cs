@@ -63,8 +63,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             if (m_CycleStep == CycleSteps)
             {
-                ShapeMatchingSolver.Initialize(m_Body.Model.AsModel(), m_Body.State, m_Start, quaternion.identity, float3.zero,
-                    out m_Body.Status);
+                m_Body.Reset(m_Start, quaternion.identity);
                 m_CycleStep = 0;
             }
             ShapeMatchingStepReport report = m_Body.Step(ShapeMatchingBenchmarkBody.TimeStep, m_Colliders);
