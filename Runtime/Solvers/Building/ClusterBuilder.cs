@@ -109,8 +109,9 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Centre indices i in [0, n) whose cube holds coordinate x: |x − (start + i·h)| ≤ h, tested exactly per candidate.</summary>
         static void Range(float x, double start, double h, long n, out long first, out long last)
         {
-            long lo = Math.Max(0L, (long)Math.Floor((x - start) / h) - 2);
-            long hi = Math.Min(n - 1, (long)Math.Floor((x - start) / h) + 2);
+            long cell = (long)Math.Floor((x - start) / h);
+            long lo = Math.Max(0L, cell - 2);
+            long hi = Math.Min(n - 1, cell + 2);
             first = long.MaxValue;
             last = long.MinValue;
             for (long i = lo; i <= hi; i++)

@@ -35,9 +35,6 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The spacing used for "auto" (m): longest extent / <see cref="AutoSpacingDivisions"/>.</summary>
         public static float AutoSpacing(in AxisAlignedBox bounds) => bounds.LongestExtent / AutoSpacingDivisions;
 
-        /// <summary>Lattice points inside <paramref name="bounds"/> for <paramref name="spacing"/> (m), in double.</summary>
-        public static double LatticePointCount(in AxisAlignedBox bounds, float spacing) => CubicLattice.PointCount(bounds, spacing);
-
         /// <summary>
         /// Appends to <paramref name="output"/> the lattice points strictly inside the closed, consistently
         /// wound surface (<paramref name="surfaceParticles"/>, <paramref name="triangles"/>), at most
@@ -54,7 +51,7 @@ namespace SoftBodyDynamics.Solvers
             if (!(spacing > 0f) || !math.isfinite(spacing))
                 throw new ArgumentOutOfRangeException(nameof(spacing), spacing, "The spacing must be finite and positive.");
             AxisAlignedBox bounds = AxisAlignedBox.Of(surfaceParticles);
-            if (LatticePointCount(bounds, spacing) > MaxLatticePoints)
+            if (CubicLattice.PointCount(bounds, spacing) > MaxLatticePoints)
                 throw new ArgumentOutOfRangeException(nameof(spacing), spacing, "The lattice has too many points for these bounds.");
 
             var lattice = new CubicLattice(bounds, spacing);

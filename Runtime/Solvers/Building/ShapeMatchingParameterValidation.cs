@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Appends an issue for every bad field (an error, or a warning for stiffness 0); returns true when no error was added.</summary>
         public static bool Validate(in ShapeMatchingParameters p, List<SoftBodyIssue> issues)
         {
-            int errorsBefore = CountErrors(issues);
+            int before = issues.Count;
 
             if ((uint)p.Mode > (uint)ShapeMatchingMode.Quadratic)
                 Error(issues, SoftBodyIssueCode.ModeInvalid, Invariant($"Mode is {(int)p.Mode}, which is not Rigid, Linear or Quadratic."));
@@ -58,7 +58,7 @@ namespace SoftBodyDynamics.Solvers
                 Error(issues, SoftBodyIssueCode.RotationIterationsInvalid, Invariant(
                     $"RotationIterations is {p.RotationIterations}; it must be at least 1 (default {RotationExtraction.DefaultMaxIterations})."));
 
-            return CountErrors(issues) == errorsBefore;
+            return !SoftBodyIssue.AnyError(issues, before);
         }
 
         /// <summary>Adds a <see cref="SoftBodyIssueCode.ParameterNotFinite"/> error and returns false when <paramref name="value"/> is NaN or infinite.</summary>
@@ -79,14 +79,5 @@ namespace SoftBodyDynamics.Solvers
 
         static void Error(List<SoftBodyIssue> issues, SoftBodyIssueCode code, string message) =>
             issues.Add(SoftBodyIssue.Error(code, -1, message));
-
-        static int CountErrors(List<SoftBodyIssue> issues)
-        {
-            int count = 0;
-            foreach (SoftBodyIssue issue in issues)
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
-                    count++;
-            return count;
-        }
     }
 }

@@ -132,7 +132,7 @@ namespace SoftBodyDynamics.Solvers
         {
             AxisAlignedBox bounds = AxisAlignedBox.Of(welded.Positions);
             float spacing = settings.InteriorSpacing > 0f ? settings.InteriorSpacing : InteriorSampling.AutoSpacing(bounds);
-            double lattice = InteriorSampling.LatticePointCount(bounds, spacing);
+            double lattice = CubicLattice.PointCount(bounds, spacing);
             if (lattice > InteriorSampling.MaxLatticePoints)
             {
                 float3 size = bounds.Extent;

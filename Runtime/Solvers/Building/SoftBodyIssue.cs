@@ -33,11 +33,11 @@ namespace SoftBodyDynamics.Solvers
         public static SoftBodyIssue Warning(SoftBodyIssueCode code, int index, string message) =>
             new SoftBodyIssue(code, SoftBodyIssueSeverity.Warning, index, message);
 
-        /// <summary>True when any issue in <paramref name="issues"/> is an error.</summary>
-        public static bool AnyError(List<SoftBodyIssue> issues)
+        /// <summary>True when any issue in <paramref name="issues"/> from index <paramref name="start"/> on is an error.</summary>
+        public static bool AnyError(List<SoftBodyIssue> issues, int start = 0)
         {
-            foreach (SoftBodyIssue issue in issues)
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
+            for (int i = start; i < issues.Count; i++)
+                if (issues[i].Severity == SoftBodyIssueSeverity.Error)
                     return true;
             return false;
         }

@@ -65,10 +65,19 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Clusters_OverlapWhenSmallerThanTheBody()
         {
+            // 6³ points at 0.25 m (E = 1.25 m), d = 0.6 m, a size that is not a multiple of the spacing: h = 0.3 m,
+            // ⌈1.25/0.3⌉ + 1 = 6 centres per axis at −0.125 + 0.3·i. A point 0.25·m is on a cube's face when
+            // 0.25·m = −0.125 + 0.3·(i ± 1), i.e. 10·m + 5 = 12·(i ± 1), which has no integer solution: every point
+            // is at least 0.025 m from every face, far beyond the rounding of 0.6f (≈ 2e-8 m per centre) and of the
+            // double arithmetic. Along an axis the centres hold 1, 2, 3, 3, 2, 1 points; a cluster with a one-point
+            // axis is planar, and every point is also in a cluster of ≥ 2 points per axis, so only those 4³ = 64
+            // remain, with (2 + 3 + 3 + 2)³ = 1000 memberships.
             float3[] points = TestMeshes.Grid(6, 0.25f);
             ClusterSet clusters = ClusterBuilder.Build(points, 0.6f);
             AssertWellFormed(clusters, points.Length);
-            Assert.That(clusters.Count, Is.GreaterThan(1));
+            Assert.That(clusters.Count, Is.EqualTo(64));
+            Assert.That(clusters.Particles.Length, Is.EqualTo(1000));
+            Assert.That(clusters.WeakClusterCount, Is.EqualTo(0));
             Assert.That(Coverage(clusters, points.Length), Has.Some.GreaterThan(1), "some particle is shared by clusters");
         }
 

@@ -49,11 +49,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Interior_InwardFacingCubeGivesTheSamePoints()
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
-            int[] reversed = (int[])triangles.Clone();
-            for (int t = 0; t < 12; t++)
-                reversed = TestMeshes.FlipTriangle(reversed, t);
             List<float3> outward = SampleWelded(vertices, triangles, 0.25f, 1000, out _);
-            List<float3> inward = SampleWelded(vertices, reversed, 0.25f, 1000, out _);
+            List<float3> inward = SampleWelded(vertices, TestMeshes.Reversed(triangles), 0.25f, 1000, out _);
             Assert.That(inward, Is.EqualTo(outward));
         }
 
@@ -118,9 +115,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [TestCaseSource(nameof(ClosedMeshes))]
         public void Interior_MatchesPointwiseClassification(float3[] vertices, int[] triangles, float spacing)
         {
-            float tolerance = MeshWelding.ResolveTolerance(AxisAlignedBox.Of(vertices), MeshWelding.DefaultRelativeTolerance, 0f);
-            WeldedVertices welded = MeshWelding.Weld(vertices, tolerance);
-            int[] particleTriangles = MeshWelding.RemapTriangles(triangles, welded.VertexToParticle);
+            WeldedVertices welded = TestMeshes.WeldAtDefaultTolerance(vertices, triangles, out int[] particleTriangles);
             var sampled = new List<float3>();
             InteriorSampling.Sample(welded.Positions, particleTriangles, spacing, int.MaxValue - 1, sampled);
 
@@ -152,9 +147,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             // the test's own error stays below 16·2⁻⁵³·|b − a||c − a||p − a|.
             const int rings = 10, segments = 16;
             TestMeshes.UvSphere(rings, segments, out float3[] vertices, out int[] triangles);
-            float tolerance = MeshWelding.ResolveTolerance(AxisAlignedBox.Of(vertices), MeshWelding.DefaultRelativeTolerance, 0f);
-            WeldedVertices welded = MeshWelding.Weld(vertices, tolerance);
-            int[] particleTriangles = MeshWelding.RemapTriangles(triangles, welded.VertexToParticle);
+            WeldedVertices welded = TestMeshes.WeldAtDefaultTolerance(vertices, triangles, out int[] particleTriangles);
             var output = new List<float3>();
             int found = InteriorSampling.Sample(welded.Positions, particleTriangles, 0.2f, 10000, output);
 

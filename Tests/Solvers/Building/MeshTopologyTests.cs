@@ -7,18 +7,17 @@ namespace SoftBodyDynamics.Tests.Solvers
     /// <summary>Closedness, manifoldness, winding and degenerate triangles of welded meshes (integer counts, no tolerances).</summary>
     public class MeshTopologyTests
     {
-        static MeshTopology WeldAndAnalyse(float3[] vertices, int[] triangles, out WeldedVertices welded)
+        static MeshTopology WeldAndAnalyse(float3[] vertices, int[] triangles)
         {
-            float tolerance = MeshWelding.ResolveTolerance(AxisAlignedBox.Of(vertices), MeshWelding.DefaultRelativeTolerance, 0f);
-            welded = MeshWelding.Weld(vertices, tolerance);
-            return MeshTopology.Analyse(welded.Positions, MeshWelding.RemapTriangles(triangles, welded.VertexToParticle));
+            WeldedVertices welded = TestMeshes.WeldAtDefaultTolerance(vertices, triangles, out int[] particleTriangles);
+            return MeshTopology.Analyse(welded.Positions, particleTriangles);
         }
 
         [Test]
         public void Topology_WeldedCubeIsClosedAndConsistentlyWound()
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
-            MeshTopology topology = WeldAndAnalyse(vertices, triangles, out _);
+            MeshTopology topology = WeldAndAnalyse(vertices, triangles);
             Assert.That(topology.IsClosed, Is.True);
             Assert.That(topology.IsConsistentlyWound, Is.True);
             Assert.That(topology.EdgeCount, Is.EqualTo(18), "12 cube edges + 6 face diagonals");
@@ -39,7 +38,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Topology_OpenQuadIsNotClosed()
         {
             TestMeshes.OpenQuad(out float3[] vertices, out int[] triangles);
-            MeshTopology topology = WeldAndAnalyse(vertices, triangles, out _);
+            MeshTopology topology = WeldAndAnalyse(vertices, triangles);
             Assert.That(topology.IsClosed, Is.False);
             Assert.That(topology.BoundaryEdgeCount, Is.EqualTo(4));
             Assert.That(topology.FirstBoundaryTriangle, Is.EqualTo(0));
@@ -64,7 +63,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Topology_FlippedTriangleMakesWindingInconsistent()
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
-            MeshTopology topology = WeldAndAnalyse(vertices, TestMeshes.FlipTriangle(triangles, 5), out _);
+            MeshTopology topology = WeldAndAnalyse(vertices, TestMeshes.FlipTriangle(triangles, 5));
             Assert.That(topology.IsClosed, Is.True, "flipping does not open the surface");
             Assert.That(topology.InconsistentEdgeCount, Is.EqualTo(3), "each edge of the flipped triangle now runs the same way as its neighbour's");
             Assert.That(topology.IsConsistentlyWound, Is.False);
@@ -92,7 +91,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             const int rings = 12, segments = 20;
             TestMeshes.UvSphere(rings, segments, out float3[] vertices, out int[] triangles);
-            MeshTopology topology = WeldAndAnalyse(vertices, triangles, out _);
+            MeshTopology topology = WeldAndAnalyse(vertices, triangles);
             Assert.That(topology.IsClosed, Is.True);
             Assert.That(topology.IsConsistentlyWound, Is.True);
             Assert.That(topology.DegenerateTriangleCount, Is.EqualTo(2 * segments), "one triangle per quad of each pole row");

@@ -85,7 +85,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UnityCube(out float3[] vertices, out _, 2f);
             AxisAlignedBox bounds = AxisAlignedBox.Of(vertices);
-            // 1e-5f, the diagonal 2√3 m and their product are each rounded once to float: ≤ 1.5ε relative.
+            // 1e-5f, the diagonal 2√3 m and their product are each rounded once to float (≤ 1.5ε relative), and
+            // the expected value is rounded once more (≤ ε/2): they differ by at most 2ε relative.
             float expected = (float)(1e-5 * 2.0 * System.Math.Sqrt(3.0));
             Assert.That(MeshWelding.ResolveTolerance(bounds, 1e-5f, 0f), Is.EqualTo(expected).Within(2f * math.EPSILON * expected));
             Assert.That(MeshWelding.ResolveTolerance(bounds, 1e-5f, 0.01f), Is.EqualTo(0.01f));

@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Tests.Solvers
@@ -112,15 +113,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             vertices = new float3[outer.Length + inner.Length];
             outer.CopyTo(vertices, 0);
             inner.CopyTo(vertices, outer.Length);
-            triangles = new int[outerTriangles.Length + innerTriangles.Length];
+            int[] reversedInner = Reversed(innerTriangles);
+            triangles = new int[outerTriangles.Length + reversedInner.Length];
             outerTriangles.CopyTo(triangles, 0);
-            for (int t = 0; t < innerTriangles.Length / 3; t++)
-            {
-                int o = outerTriangles.Length + 3 * t;
-                triangles[o] = innerTriangles[3 * t] + outer.Length;
-                triangles[o + 1] = innerTriangles[3 * t + 2] + outer.Length;
-                triangles[o + 2] = innerTriangles[3 * t + 1] + outer.Length;
-            }
+            for (int i = 0; i < reversedInner.Length; i++)
+                triangles[outerTriangles.Length + i] = reversedInner[i] + outer.Length;
         }
 
         /// <summary>n × n × n points at spacing <paramref name="spacing"/> from the origin, x fastest (exact in float for the spacings used).</summary>
@@ -132,6 +129,30 @@ namespace SoftBodyDynamics.Tests.Solvers
             for (int i = 0; i < n; i++)
                 points[i + n * (j + n * k)] = new float3(i, j, k) * spacing;
             return points;
+        }
+
+        /// <summary>A copy of <paramref name="triangles"/> with every triangle wound the other way (second and third corners swapped).</summary>
+        public static int[] Reversed(int[] triangles)
+        {
+            var copy = (int[])triangles.Clone();
+            for (int t = 0; t < triangles.Length / 3; t++)
+            {
+                copy[3 * t + 1] = triangles[3 * t + 2];
+                copy[3 * t + 2] = triangles[3 * t + 1];
+            }
+            return copy;
+        }
+
+        /// <summary>
+        /// Welds <paramref name="vertices"/> at the default relative tolerance (as <see cref="SoftBodyBuildSettings.Default"/> does)
+        /// and gives the triangles as particle indices.
+        /// </summary>
+        public static WeldedVertices WeldAtDefaultTolerance(float3[] vertices, int[] triangles, out int[] particleTriangles)
+        {
+            float tolerance = MeshWelding.ResolveTolerance(AxisAlignedBox.Of(vertices), MeshWelding.DefaultRelativeTolerance, 0f);
+            WeldedVertices welded = MeshWelding.Weld(vertices, tolerance);
+            particleTriangles = MeshWelding.RemapTriangles(triangles, welded.VertexToParticle);
+            return welded;
         }
 
         /// <summary>A copy of <paramref name="triangles"/> with triangle <paramref name="triangle"/> wound the other way.</summary>
