@@ -9,7 +9,7 @@ namespace SoftBodyDynamics
     /// <summary>Span views of a body's buffers and scratch, as the solver takes them (no copies).</summary>
     static class SoftBodyBuffers
     {
-        /// <summary>Scratch floats3 per particle the step needs: predicted positions, goals, contact normals.</summary>
+        /// <summary>Scratch float3s per particle the step needs: predicted positions, goals, contact normals.</summary>
         public const int ScratchPerParticle = 3;
 
         public static Span<float3> AsSpan(DynamicBuffer<SoftBodyPosition> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();

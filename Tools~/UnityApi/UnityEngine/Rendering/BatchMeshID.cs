@@ -8,8 +8,6 @@ namespace UnityEngine.Rendering
     {
         // https://docs.unity3d.com/ScriptReference/Rendering.BatchMeshID.Null.html
         public static readonly BatchMeshID Null;
-        // https://docs.unity3d.com/ScriptReference/Rendering.BatchMeshID-value.html
-        public uint value;
         // https://docs.unity3d.com/ScriptReference/Rendering.BatchMeshID.Equals.html
         public bool Equals(BatchMeshID other) => throw null;
     }

@@ -11,8 +11,6 @@ namespace UnityEngine.Rendering
         public VertexAttributeFormat format { get => throw null; set => throw null; }
         // https://docs.unity3d.com/ScriptReference/Rendering.VertexAttributeDescriptor-dimension.html
         public int dimension { get => throw null; set => throw null; }
-        // https://docs.unity3d.com/ScriptReference/Rendering.VertexAttributeDescriptor-stream.html
-        public int stream { get => throw null; set => throw null; }
 
         // https://docs.unity3d.com/ScriptReference/Rendering.VertexAttributeDescriptor-ctor.html
         public VertexAttributeDescriptor(VertexAttribute attribute = VertexAttribute.Position,
