@@ -52,15 +52,14 @@ namespace SoftBodyDynamics
                     quadratic = SoftBodyBuffers.AsSpan(perInstance);
                 }
 
-                var scratch = new NativeArray<float3>(SoftBodyBuffers.ScratchPerParticle * n, Allocator.Temp,
-                    NativeArrayOptions.UninitializedMemory);
-                var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
+                // Placing the rest shape needs no scratch (see ShapeMatchingState): none is allocated.
+                var solverState = new ShapeMatchingState(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
+                    SoftBodyBuffers.AsSpan(clusters), quadratic, default, default, default);
                 quaternion rotation = math.normalizesafe(transform.Rotation);
                 transform = LocalTransform.FromPositionRotation(transform.Position, rotation);
                 ShapeMatchingSolver.Initialize(blob.AsModel(), solverState,
                     SoftBodyPlacement.CenterOfMass(transform, blob.BodyRest.RestCenter), rotation, float3.zero, out body.Status);
                 body.LastReport = new ShapeMatchingStepReport { BadParticle = -1 };
-                scratch.Dispose();
                 uninitialized.ValueRW = false;
             }
         }

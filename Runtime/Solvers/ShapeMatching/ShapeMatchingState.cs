@@ -6,7 +6,8 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// The mutable part of one body (dynamic buffers in ECS) and the scratch the step needs. Views
     /// only; every span of particles has the model's particle count, every span of clusters its
-    /// cluster count.
+    /// cluster count. <see cref="ShapeMatchingSolver.Initialize"/> and
+    /// <see cref="ShapeMatchingSolver.PlaceRestShape"/> use no scratch: the three scratch spans may be empty there.
     /// </summary>
     public readonly ref struct ShapeMatchingState
     {
