@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Text;
 using SoftBodyDynamics.Authoring;
 using SoftBodyDynamics.Solvers;
@@ -51,13 +50,7 @@ namespace SoftBodyDynamics.Editor
             root.Add(Section("Limits",
                 nameof(SoftBodyAuthoring.maxParticles), nameof(SoftBodyAuthoring.maxSpeed), nameof(SoftBodyAuthoring.rotationIterations)));
 
-            root.TrackSerializedObjectValue(serializedObject, _ => Refresh());
-            // The Transform's scale is baked into the rest shape: track the Transforms too.
-            var transforms = new List<UnityEngine.Object>();
-            foreach (UnityEngine.Object selected in targets)
-                if (selected is SoftBodyAuthoring authoring)
-                    transforms.Add(authoring.transform);
-            root.TrackSerializedObjectValue(new SerializedObject(transforms.ToArray()), _ => Refresh());
+            SoftBodyInspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
             Refresh();
             return root;
         }
@@ -125,8 +118,7 @@ namespace SoftBodyDynamics.Editor
                     counts.Append('\n');
                 counts.Append(prefix).Append(Describe(report.Result));
                 foreach (SoftBodyIssue issue in report.Issues)
-                    m_Issues.Add(new HelpBox(prefix + issue.Message,
-                        issue.Severity == SoftBodyIssueSeverity.Error ? HelpBoxMessageType.Error : HelpBoxMessageType.Warning));
+                    m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             m_Counts.text = counts.ToString();
         }

@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using SoftBodyDynamics.Authoring;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
@@ -26,7 +25,7 @@ namespace SoftBodyDynamics.Editor
         [DrawGizmo(GizmoType.Selected | GizmoType.Active)]
         static void DrawParticlesAndClusters(SoftBodyAuthoring authoring, GizmoType gizmoType)
         {
-            Mesh mesh = SoftBodyAuthoringValidation.FindReadableMesh(authoring, new List<SoftBodyIssue>());
+            Mesh mesh = SoftBodyAuthoringValidation.FindReadableMesh(authoring, null);
             if (mesh == null)
                 return;
             SoftBodyBuildResult result = SoftBodyBuildPreviewCache.Build(mesh, authoring.BakedScale, authoring.BuildSettings).Result;

@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using SoftBodyDynamics.Authoring;
 using SoftBodyDynamics.Solvers;
 using UnityEditor;
@@ -34,13 +33,7 @@ namespace SoftBodyDynamics.Editor
             root.Add(m_Height = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.height))));
             root.Add(m_Direction = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.direction))));
 
-            root.TrackSerializedObjectValue(serializedObject, _ => Refresh());
-            // Scale and rotation live on the Transforms: track them too, for the non-uniform scale warning.
-            var transforms = new List<Object>();
-            foreach (Object selected in targets)
-                if (selected is SoftBodyColliderAuthoring collider)
-                    transforms.Add(collider.transform);
-            root.TrackSerializedObjectValue(new SerializedObject(transforms.ToArray()), _ => Refresh());
+            SoftBodyInspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
             Refresh();
             return root;
         }
@@ -62,8 +55,7 @@ namespace SoftBodyDynamics.Editor
                 usesCapsule |= collider.shape == ColliderShapeType.Capsule;
                 string prefix = several ? collider.name + ": " : "";
                 foreach (SoftBodyColliderIssue issue in SoftBodyColliderValidation.Validate(collider))
-                    m_Issues.Add(new HelpBox(prefix + issue.Message,
-                        issue.Severity == SoftBodyIssueSeverity.Error ? HelpBoxMessageType.Error : HelpBoxMessageType.Warning));
+                    m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             Show(m_Size, usesSize);
             Show(m_Radius, usesRadius);

@@ -15,6 +15,11 @@ namespace SoftBodyDynamics.Authoring
     [AddComponentMenu("Soft Body Dynamics/Soft Body")]
     public sealed class SoftBodyAuthoring : MonoBehaviour
     {
+        // The defaults: the Jelly preset's material values (so a new component holds the preset it names), and the
+        // solver's own defaults for everything else. The tooltips quote them.
+        static readonly SoftBodyPresetValues k_Jelly = SoftBodyPresets.Jelly;
+        static readonly ShapeMatchingParameters k_Solver = ShapeMatchingParameters.Default;
+
         // ---- Preset
 
         [Tooltip("Material preset: sets Mode, Stiffness, Beta, Damping, Plasticity, Friction and Restitution. "
@@ -54,74 +59,74 @@ namespace SoftBodyDynamics.Authoring
 
         [Tooltip("Mass of the whole body (kg), spread evenly over all particles. Default 1 kg.")]
         [Min(0f)]
-        public float totalMass = 1f;
+        public float totalMass = SoftBodyBuildSettings.Default.TotalMass;
 
         // ---- Material
 
         [Tooltip("Rigid: rotation only (stiff, cheapest). Linear: also shear and stretch, blended by Beta. "
                  + "Quadratic: also bending and twisting within one cluster (costs 324 bytes per cluster). Default Linear.")]
-        public ShapeMatchingMode mode = ShapeMatchingMode.Linear;
+        public ShapeMatchingMode mode = k_Jelly.Mode;
 
         [Tooltip("Stiffness α: fraction of the way back to the goal shape covered per frame (0–1, independent of the substep "
                  + "count). 1 = stiff, 0.05 = very soft. Jelly 0.15.")]
         [Range(0f, 1f)]
-        public float stiffness = 0.15f;
+        public float stiffness = k_Jelly.Stiffness;
 
         [Tooltip("β: how much of the linear or quadratic deformation the goal shape keeps (0–1). 0 = rigid goals, "
                  + "1 = the body may shear and stretch freely. Unused in Rigid mode. Jelly 0.6.")]
         [Range(0f, 1f)]
-        public float beta = 0.6f;
+        public float beta = k_Jelly.Beta;
 
         [Tooltip("Rate at which wobbling decays (1/s). Only motion that differs from the body's rigid motion is damped, so "
-                 + "falling and spinning are untouched. 0 = none. Jelly 0.5.")]
+                 + "falling and spinning are untouched. 0 = none. Jelly 3.")]
         [Min(0f)]
-        public float damping = 0.5f;
+        public float damping = k_Jelly.Damping;
 
         [Tooltip("Simulation substeps per fixed step (1–64). More: stiffer contacts and less tunnelling, at proportional cost. Default 4.")]
-        [Range(1, 64)]
-        public int substeps = 4;
+        [Range(ShapeMatchingParameterValidation.MinSubsteps, ShapeMatchingParameterValidation.MaxSubsteps)]
+        public int substeps = k_Solver.Substeps;
 
         [Tooltip("Uniform acceleration on every particle (m/s²): gravity plus any wind-like force per mass. Default (0, −9.81, 0).")]
-        public Vector3 gravity = new Vector3(0f, -9.81f, 0f);
+        public Vector3 gravity = UnityMathConversions.ToVector3(k_Solver.Acceleration);
 
         // ---- Plasticity
 
         [Tooltip("Strain (‖S − I‖, dimensionless) above which the rest shape starts to flow. 0 with Creep 0 = perfectly elastic. "
                  + "Clay 0.05.")]
         [Min(0f)]
-        public float plasticYield = 0f;
+        public float plasticYield = k_Jelly.Plasticity.Yield;
 
         [Tooltip("Rate (1/s) at which the rest shape follows the deformation while yielding. 0 = elastic. Clay 10.")]
         [Min(0f)]
-        public float plasticCreep = 0f;
+        public float plasticCreep = k_Jelly.Plasticity.Creep;
 
         [Tooltip("Largest plastic strain (dimensionless) the rest shape may accumulate. 0 = elastic. Clay 0.6.")]
         [Min(0f)]
-        public float plasticMaxDeformation = 0f;
+        public float plasticMaxDeformation = k_Jelly.Plasticity.MaxDeformation;
 
         // ---- Collisions
 
         [Tooltip("Radius of every particle against colliders (m). Default 0.02 m.")]
         [Min(0f)]
-        public float particleRadius = 0.02f;
+        public float particleRadius = k_Solver.ParticleRadius;
 
         [Tooltip("Coulomb friction coefficient μ against colliders (0 = ice, about 1 = rubber on concrete). Jelly 0.4.")]
         [Min(0f)]
-        public float friction = 0.4f;
+        public float friction = k_Jelly.Friction;
 
         [Tooltip("Restitution e of contacts (0–1): 0 = no bounce, 1 = perfectly elastic bounce. Jelly 0.2.")]
         [Range(0f, 1f)]
-        public float restitution = 0.2f;
+        public float restitution = k_Jelly.Restitution;
 
         // ---- Sleep
 
         [Tooltip("The body sleeps once every particle has stayed slower than this for Sleep Delay (m/s). 0 = never sleeps. Default 0.02 m/s.")]
         [Min(0f)]
-        public float sleepSpeed = 0.02f;
+        public float sleepSpeed = k_Solver.SleepSpeed;
 
         [Tooltip("Time every particle must stay below Sleep Speed before the body sleeps (s). Default 1 s.")]
         [Min(0f)]
-        public float sleepDelay = 1f;
+        public float sleepDelay = k_Solver.SleepDelay;
 
         // ---- Limits
 
@@ -131,11 +136,11 @@ namespace SoftBodyDynamics.Authoring
 
         [Tooltip("Speed above which the state counts as broken and the body is reset to its rest shape (m/s). Default 500 m/s.")]
         [Min(0f)]
-        public float maxSpeed = 500f;
+        public float maxSpeed = k_Solver.MaxSpeed;
 
         [Tooltip("Rotation-extraction iterations per cluster and substep (warm-started; 2–3 usually suffice). Default 20 (a cap, rarely reached).")]
         [Range(1, 100)]
-        public int rotationIterations = RotationExtraction.DefaultMaxIterations;
+        public int rotationIterations = k_Solver.RotationIterations;
 
         /// <summary>How the mesh becomes particles and clusters (bake time).</summary>
         public SoftBodyBuildSettings BuildSettings => new SoftBodyBuildSettings

@@ -80,12 +80,12 @@ namespace SoftBodyDynamics.Authoring
                             $"Capsule direction {(int)collider.Direction} is not X, Y or Z. Pick one of them."));
                         break;
                     }
-                    CheckScale(scale, SoftBodyColliderWorldShape.RadialScale(scale, collider.Direction) == 0f, "capsule", issues);
-                    int axis = (int)collider.Direction;
-                    float a = axis == 0 ? scale.y : scale.x, b = axis == 2 ? scale.y : scale.z;
-                    if (finiteScale && !IsUniform(a, b))
+                    float2 radial = SoftBodyColliderWorldShape.RadialScales(scale, collider.Direction);
+                    float radialScale = SoftBodyColliderWorldShape.RadialScale(scale, collider.Direction);
+                    CheckScale(scale, radialScale == 0f, "capsule", issues);
+                    if (finiteScale && !IsUniform(radial.x, radial.y))
                         issues.Add(Warning(SoftBodyColliderIssueCode.NonUniformScale,
-                            $"The capsule is scaled differently across its {collider.Direction} axis ({Format(lossyScale)}); its radius uses the larger factor, {math.max(a, b):0.###}. "
+                            $"The capsule is scaled differently across its {collider.Direction} axis ({Format(lossyScale)}); its radius uses the larger factor, {radialScale:0.###}. "
                             + "Scale it uniformly across its axis (stretching along the axis is fine)."));
                     break;
                 }

@@ -47,11 +47,18 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>The larger of the two scale factors across a capsule's axis.</summary>
         public static float RadialScale(float3 absoluteScale, SoftBodyCapsuleAxis direction)
         {
+            float2 radial = RadialScales(absoluteScale, direction);
+            return math.max(radial.x, radial.y);
+        }
+
+        /// <summary>The two scale factors across a capsule's axis, in X, Y, Z order.</summary>
+        public static float2 RadialScales(float3 absoluteScale, SoftBodyCapsuleAxis direction)
+        {
             switch (direction)
             {
-                case SoftBodyCapsuleAxis.X: return math.max(absoluteScale.y, absoluteScale.z);
-                case SoftBodyCapsuleAxis.Z: return math.max(absoluteScale.x, absoluteScale.y);
-                default: return math.max(absoluteScale.x, absoluteScale.z);
+                case SoftBodyCapsuleAxis.X: return new float2(absoluteScale.y, absoluteScale.z);
+                case SoftBodyCapsuleAxis.Z: return new float2(absoluteScale.x, absoluteScale.y);
+                default: return new float2(absoluteScale.x, absoluteScale.z);
             }
         }
     }

@@ -194,6 +194,19 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(errors, Does.Contain(SoftBodyIssueCode.RestitutionOutOfRange));
         }
 
+        [TestCase(true)]
+        [TestCase(false)]
+        public void Validate_BadBuildSetting_IsReportedOnceWithOrWithoutAMesh(bool hasMesh)
+        {
+            SoftBodyAuthoring body = CreateBody(hasMesh ? CreateCubeMesh() : null);
+            body.totalMass = 0f;
+
+            List<SoftBodyIssueCode> errors = Errors(SoftBodyAuthoringValidation.Validate(body));
+
+            Assert.That(errors.FindAll(code => code == SoftBodyIssueCode.TotalMassNotPositive), Has.Count.EqualTo(1));
+            Assert.That(errors.Contains(SoftBodyIssueCode.NoMesh), Is.EqualTo(!hasMesh));
+        }
+
         // ---------------------------------------------------------------- presets
 
         [Test]
