@@ -17,8 +17,8 @@ namespace SoftBodyDynamics.Authoring
             // The world-space shape depends on the whole parent chain of the Transform.
             DependsOn(authoring.transform);
 
-            List<SoftBodyColliderIssue> issues = SoftBodyColliderValidation.Validate(authoring);
-            foreach (SoftBodyColliderIssue issue in issues)
+            List<SoftBodyIssue> issues = SoftBodyColliderValidation.Validate(authoring);
+            foreach (SoftBodyIssue issue in issues)
             {
                 string message = $"Soft Body Collider on '{authoring.name}': {issue.Message}";
                 if (issue.Severity == SoftBodyIssueSeverity.Error)
@@ -26,7 +26,7 @@ namespace SoftBodyDynamics.Authoring
                 else
                     Debug.LogWarning(message, authoring);
             }
-            if (SoftBodyColliderIssue.AnyError(issues))
+            if (SoftBodyIssue.AnyError(issues))
                 return;
 
             Entity entity = GetEntity(TransformUsageFlags.None);

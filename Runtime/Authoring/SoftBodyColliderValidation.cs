@@ -14,9 +14,9 @@ namespace SoftBodyDynamics.Authoring
         public const float UniformScaleTolerance = 1e-3f;
 
         /// <summary>The issues of <paramref name="authoring"/> with its current transform.</summary>
-        public static List<SoftBodyColliderIssue> Validate(SoftBodyColliderAuthoring authoring)
+        public static List<SoftBodyIssue> Validate(SoftBodyColliderAuthoring authoring)
         {
-            var issues = new List<SoftBodyColliderIssue>();
+            var issues = new List<SoftBodyIssue>();
             var transform = authoring.transform;
             Validate(authoring.Definition, UnityMathConversions.ToFloat3(transform.position),
                 UnityMathConversions.ToQuaternion(transform.rotation), UnityMathConversions.ToFloat3(transform.lossyScale),
@@ -26,22 +26,22 @@ namespace SoftBodyDynamics.Authoring
 
         /// <summary>Appends the issues of <paramref name="collider"/> placed by the given transform to <paramref name="issues"/>.</summary>
         public static void Validate(in SoftBodyColliderDefinition collider, float3 position, quaternion rotation,
-            float3 lossyScale, List<SoftBodyColliderIssue> issues)
+            float3 lossyScale, List<SoftBodyIssue> issues)
         {
             if (collider.Shape != ColliderShapeType.Plane && collider.Shape != ColliderShapeType.Sphere
                 && collider.Shape != ColliderShapeType.Box && collider.Shape != ColliderShapeType.Capsule)
             {
-                issues.Add(Error(SoftBodyColliderIssueCode.ShapeInvalid,
+                issues.Add(Error(SoftBodyIssueCode.ColliderShapeInvalid,
                     $"Shape {(int)collider.Shape} is not Plane, Sphere, Box or Capsule. Pick one of them."));
                 return;
             }
 
             if (!math.all(math.isfinite(position)) || !math.all(math.isfinite(rotation.value)) || !math.all(math.isfinite(lossyScale)))
-                issues.Add(Error(SoftBodyColliderIssueCode.TransformNotFinite,
+                issues.Add(Error(SoftBodyIssueCode.ColliderTransformNotFinite,
                     "The transform's position, rotation or scale is NaN or infinite. Reset the Transform."));
 
             if (!math.all(math.isfinite(collider.Center)))
-                issues.Add(Error(SoftBodyColliderIssueCode.SizeNotFinite, "Center is NaN or infinite. Enter a finite point (m)."));
+                issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotFinite, "Center is NaN or infinite. Enter a finite point (m)."));
 
             float3 scale = math.abs(lossyScale);
             bool finiteScale = math.all(math.isfinite(scale));
@@ -51,15 +51,15 @@ namespace SoftBodyDynamics.Authoring
                     CheckRadius(collider.Radius, issues);
                     CheckScale(scale, math.cmax(scale) == 0f, "sphere", issues);
                     if (finiteScale && (!IsUniform(scale.x, scale.y) || !IsUniform(scale.y, scale.z)))
-                        issues.Add(Warning(SoftBodyColliderIssueCode.NonUniformScale,
+                        issues.Add(Warning(SoftBodyIssueCode.ColliderNonUniformScale,
                             $"The sphere is scaled non-uniformly ({Format(lossyScale)}); its radius uses the largest factor, {math.cmax(scale):0.###}. "
                             + "Use a uniform scale, or a box or capsule for an elongated shape."));
                     break;
                 case ColliderShapeType.Box:
                     if (!math.all(math.isfinite(collider.Size)))
-                        issues.Add(Error(SoftBodyColliderIssueCode.SizeNotFinite, "Size is NaN or infinite. Enter the box's full size along X, Y and Z (m)."));
+                        issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotFinite, "Size is NaN or infinite. Enter the box's full size along X, Y and Z (m)."));
                     else if (math.cmin(collider.Size) <= 0f)
-                        issues.Add(Error(SoftBodyColliderIssueCode.SizeNotPositive,
+                        issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotPositive,
                             $"Size {Format(collider.Size)} has a zero or negative component. Every edge of the box must be longer than 0 m."));
                     CheckScale(scale, math.cmin(scale) == 0f, "box", issues);
                     break;
@@ -67,16 +67,16 @@ namespace SoftBodyDynamics.Authoring
                 {
                     CheckRadius(collider.Radius, issues);
                     if (!math.isfinite(collider.Height))
-                        issues.Add(Error(SoftBodyColliderIssueCode.SizeNotFinite, "Height is NaN or infinite. Enter the capsule's tip-to-tip height (m)."));
+                        issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotFinite, "Height is NaN or infinite. Enter the capsule's tip-to-tip height (m)."));
                     else if (collider.Height < 0f)
-                        issues.Add(Error(SoftBodyColliderIssueCode.SizeNotPositive, $"Height {collider.Height} m is negative. Enter the capsule's tip-to-tip height (m)."));
+                        issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotPositive, $"Height {collider.Height} m is negative. Enter the capsule's tip-to-tip height (m)."));
                     else if (collider.Height < 2f * collider.Radius)
-                        issues.Add(Warning(SoftBodyColliderIssueCode.CapsuleShorterThanDiameter,
+                        issues.Add(Warning(SoftBodyIssueCode.ColliderCapsuleShorterThanDiameter,
                             $"Height {collider.Height} m is less than the diameter {2f * collider.Radius} m, so the capsule is a sphere. "
                             + "Use the Sphere shape, or make the height at least twice the radius."));
                     if (collider.Direction > SoftBodyCapsuleAxis.Z)
                     {
-                        issues.Add(Error(SoftBodyColliderIssueCode.ShapeInvalid,
+                        issues.Add(Error(SoftBodyIssueCode.ColliderShapeInvalid,
                             $"Capsule direction {(int)collider.Direction} is not X, Y or Z. Pick one of them."));
                         break;
                     }
@@ -84,7 +84,7 @@ namespace SoftBodyDynamics.Authoring
                     float radialScale = SoftBodyColliderWorldShape.RadialScale(scale, collider.Direction);
                     CheckScale(scale, radialScale == 0f, "capsule", issues);
                     if (finiteScale && !IsUniform(radial.x, radial.y))
-                        issues.Add(Warning(SoftBodyColliderIssueCode.NonUniformScale,
+                        issues.Add(Warning(SoftBodyIssueCode.ColliderNonUniformScale,
                             $"The capsule is scaled differently across its {collider.Direction} axis ({Format(lossyScale)}); its radius uses the larger factor, {radialScale:0.###}. "
                             + "Scale it uniformly across its axis (stretching along the axis is fine)."));
                     break;
@@ -92,20 +92,20 @@ namespace SoftBodyDynamics.Authoring
             }
         }
 
-        static void CheckRadius(float radius, List<SoftBodyColliderIssue> issues)
+        static void CheckRadius(float radius, List<SoftBodyIssue> issues)
         {
             if (!math.isfinite(radius))
-                issues.Add(Error(SoftBodyColliderIssueCode.SizeNotFinite, "Radius is NaN or infinite. Enter a radius in metres."));
+                issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotFinite, "Radius is NaN or infinite. Enter a radius in metres."));
             else if (radius <= 0f)
-                issues.Add(Error(SoftBodyColliderIssueCode.SizeNotPositive, $"Radius {radius} m is not positive. Enter a radius greater than 0 m."));
+                issues.Add(Error(SoftBodyIssueCode.ColliderSizeNotPositive, $"Radius {radius} m is not positive. Enter a radius greater than 0 m."));
         }
 
-        static void CheckScale(float3 absoluteScale, bool flattened, string shapeName, List<SoftBodyColliderIssue> issues)
+        static void CheckScale(float3 absoluteScale, bool flattened, string shapeName, List<SoftBodyIssue> issues)
         {
             if (!math.all(math.isfinite(absoluteScale)))
                 return; // reported as TransformNotFinite
             if (flattened)
-                issues.Add(Error(SoftBodyColliderIssueCode.ScaleZero,
+                issues.Add(Error(SoftBodyIssueCode.ColliderScaleZero,
                     $"The transform's scale {Format(absoluteScale)} has a zero factor, so the {shapeName} has no volume. Give every axis a non-zero scale."));
         }
 
@@ -113,10 +113,10 @@ namespace SoftBodyDynamics.Authoring
 
         static string Format(float3 v) => $"({v.x:0.###}, {v.y:0.###}, {v.z:0.###})";
 
-        static SoftBodyColliderIssue Error(SoftBodyColliderIssueCode code, string message) =>
-            new SoftBodyColliderIssue(code, SoftBodyIssueSeverity.Error, message);
+        static SoftBodyIssue Error(SoftBodyIssueCode code, string message) =>
+            SoftBodyIssue.Error(code, -1, message);
 
-        static SoftBodyColliderIssue Warning(SoftBodyColliderIssueCode code, string message) =>
-            new SoftBodyColliderIssue(code, SoftBodyIssueSeverity.Warning, message);
+        static SoftBodyIssue Warning(SoftBodyIssueCode code, string message) =>
+            SoftBodyIssue.Warning(code, -1, message);
     }
 }

@@ -81,10 +81,10 @@ namespace SoftBodyDynamics.Tests.Editor
             return codes;
         }
 
-        static List<SoftBodyColliderIssueCode> Codes(List<SoftBodyColliderIssue> issues, SoftBodyIssueSeverity severity)
+        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity)
         {
-            var codes = new List<SoftBodyColliderIssueCode>();
-            foreach (SoftBodyColliderIssue issue in issues)
+            var codes = new List<SoftBodyIssueCode>();
+            foreach (SoftBodyIssue issue in issues)
                 if (issue.Severity == severity)
                     codes.Add(issue.Code);
             return codes;
@@ -317,7 +317,7 @@ namespace SoftBodyDynamics.Tests.Editor
             collider.size = new Vector3(1f, 0f, 1f);
 
             Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyColliderIssueCode.SizeNotPositive));
+                Does.Contain(SoftBodyIssueCode.ColliderSizeNotPositive));
         }
 
         [Test]
@@ -327,7 +327,7 @@ namespace SoftBodyDynamics.Tests.Editor
             collider.radius = -0.1f;
 
             Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyColliderIssueCode.SizeNotPositive));
+                Does.Contain(SoftBodyIssueCode.ColliderSizeNotPositive));
         }
 
         [Test]
@@ -337,7 +337,7 @@ namespace SoftBodyDynamics.Tests.Editor
             collider.radius = float.NaN;
 
             Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyColliderIssueCode.SizeNotFinite));
+                Does.Contain(SoftBodyIssueCode.ColliderSizeNotFinite));
         }
 
         [Test]
@@ -346,10 +346,10 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
             collider.transform.localScale = new Vector3(1f, 2f, 1f);
 
-            List<SoftBodyColliderIssue> issues = SoftBodyColliderValidation.Validate(collider);
+            List<SoftBodyIssue> issues = SoftBodyColliderValidation.Validate(collider);
 
-            Assert.That(Codes(issues, SoftBodyIssueSeverity.Warning), Does.Contain(SoftBodyColliderIssueCode.NonUniformScale));
-            Assert.That(SoftBodyColliderIssue.AnyError(issues), Is.False);
+            Assert.That(Codes(issues, SoftBodyIssueSeverity.Warning), Does.Contain(SoftBodyIssueCode.ColliderNonUniformScale));
+            Assert.That(SoftBodyIssue.AnyError(issues), Is.False);
         }
 
         [Test]
@@ -368,7 +368,7 @@ namespace SoftBodyDynamics.Tests.Editor
             collider.transform.localScale = new Vector3(1f, 0f, 1f);
 
             Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyColliderIssueCode.ScaleZero));
+                Does.Contain(SoftBodyIssueCode.ColliderScaleZero));
         }
 
         /// <summary>A rotation by +90° about the unit <paramref name="axis"/>.</summary>

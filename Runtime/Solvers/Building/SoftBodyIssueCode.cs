@@ -84,5 +84,21 @@ namespace SoftBodyDynamics.Solvers
         MaxSpeedNotPositive = 73,
         /// <summary>Rotation iterations below 1.</summary>
         RotationIterationsInvalid = 74,
+
+        // Colliders (SoftBodyColliderAuthoring).
+        /// <summary>The collider shape is not one of plane, sphere, box or capsule.</summary>
+        ColliderShapeInvalid = 100,
+        /// <summary>A collider size, radius, height or centre is NaN or infinite.</summary>
+        ColliderSizeNotFinite = 101,
+        /// <summary>A collider box size or radius is zero or negative, or a capsule height is negative.</summary>
+        ColliderSizeNotPositive = 102,
+        /// <summary>The collider transform's position, rotation or scale is NaN or infinite.</summary>
+        ColliderTransformNotFinite = 103,
+        /// <summary>A scale factor the collider shape depends on is zero: it would have no volume.</summary>
+        ColliderScaleZero = 104,
+        /// <summary>Warning: a sphere (or a capsule across its axis) is scaled non-uniformly; the largest factor is used.</summary>
+        ColliderNonUniformScale = 105,
+        /// <summary>Warning: a capsule's height is less than its diameter, so it is a sphere.</summary>
+        ColliderCapsuleShorterThanDiameter = 106,
     }
 }
