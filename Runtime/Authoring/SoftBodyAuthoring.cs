@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Authoring
     {
         // The defaults: the Jelly preset's material values (so a new component holds the preset it names), and the
         // solver's own defaults for everything else. The tooltips quote them.
-        static readonly SoftBodyPresetValues k_Jelly = SoftBodyPresets.Jelly;
+        static readonly ShapeMatchingMaterial k_Jelly = SoftBodyPresets.Jelly;
         static readonly ShapeMatchingParameters k_Solver = ShapeMatchingParameters.Default;
 
         // ---- Preset

@@ -18,29 +18,9 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         const float k_Tolerance = 1e-5f;
 
-        static ShapeMatchingParameters Jelly()
-        {
-            var p = ShapeMatchingParameters.Default;
-            p.Mode = ShapeMatchingMode.Linear;
-            p.Stiffness = 0.15f;
-            p.Beta = 0.6f;
-            p.Damping = 3f;
-            p.Friction = 0.4f;
-            p.Restitution = 0.2f;
-            return p;
-        }
+        static ShapeMatchingParameters Jelly() => ShapeMatchingMaterial.Jelly.ApplyTo(ShapeMatchingParameters.Default);
 
-        static ShapeMatchingParameters Rubber()
-        {
-            var p = ShapeMatchingParameters.Default;
-            p.Mode = ShapeMatchingMode.Linear;
-            p.Stiffness = 0.6f;
-            p.Beta = 0.3f;
-            p.Damping = 4f;
-            p.Friction = 1f;
-            p.Restitution = 0.7f;
-            return p;
-        }
+        static ShapeMatchingParameters Rubber() => ShapeMatchingMaterial.Rubber.ApplyTo(ShapeMatchingParameters.Default);
 
         static ShapeMatchingModelData Build(float3[] vertices, int[] triangles, float mass)
         {
