@@ -37,15 +37,17 @@ namespace SoftBodyDynamics.Editor
             Foldout material = Section("Material / Preset", nameof(SoftBodyAuthoring.preset));
             material.Add(PresetButtons());
             AddFields(material,
-                nameof(SoftBodyAuthoring.mode), nameof(SoftBodyAuthoring.stiffness), nameof(SoftBodyAuthoring.beta),
-                nameof(SoftBodyAuthoring.damping), nameof(SoftBodyAuthoring.substeps), nameof(SoftBodyAuthoring.gravity));
+                nameof(SoftBodyAuthoring.mode), nameof(SoftBodyAuthoring.frequency), nameof(SoftBodyAuthoring.dampingRatio),
+                nameof(SoftBodyAuthoring.beta), nameof(SoftBodyAuthoring.substeps), nameof(SoftBodyAuthoring.maxSubstepPhase),
+                nameof(SoftBodyAuthoring.gravity));
             root.Add(material);
 
             root.Add(Section("Plasticity",
                 nameof(SoftBodyAuthoring.plasticYield), nameof(SoftBodyAuthoring.plasticCreep),
                 nameof(SoftBodyAuthoring.plasticMaxDeformation)));
             root.Add(Section("Collisions",
-                nameof(SoftBodyAuthoring.particleRadius), nameof(SoftBodyAuthoring.friction), nameof(SoftBodyAuthoring.restitution)));
+                nameof(SoftBodyAuthoring.particleRadius), nameof(SoftBodyAuthoring.friction), nameof(SoftBodyAuthoring.restitution),
+                nameof(SoftBodyAuthoring.maxDepenetrationSpeed)));
             root.Add(Section("Sleep", nameof(SoftBodyAuthoring.sleepSpeed), nameof(SoftBodyAuthoring.sleepDelay)));
             root.Add(Section("Limits",
                 nameof(SoftBodyAuthoring.maxParticles), nameof(SoftBodyAuthoring.maxSpeed), nameof(SoftBodyAuthoring.rotationIterations)));

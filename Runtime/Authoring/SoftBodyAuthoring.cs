@@ -1,6 +1,7 @@
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 using UnityEngine;
+using UnityEngine.Serialization;
 
 namespace SoftBodyDynamics.Authoring
 {
@@ -13,7 +14,7 @@ namespace SoftBodyDynamics.Authoring
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Soft Body Dynamics/Soft Body")]
-    public sealed class SoftBodyAuthoring : MonoBehaviour
+    public sealed class SoftBodyAuthoring : MonoBehaviour, ISerializationCallbackReceiver
     {
         // The defaults: the Jelly preset's material values (so a new component holds the preset it names), and the
         // solver's own defaults for everything else. The tooltips quote them.
@@ -22,7 +23,7 @@ namespace SoftBodyDynamics.Authoring
 
         // ---- Preset
 
-        [Tooltip("Material preset: sets Mode, Stiffness, Beta, Damping, Plasticity, Friction and Restitution. "
+        [Tooltip("Material preset: sets Mode, Frequency, Damping Ratio, Beta, Plasticity, Friction and Restitution. "
                  + "Editing one of those by hand switches to Custom.")]
         public SoftBodyPreset preset = SoftBodyPreset.Jelly;
 
@@ -67,24 +68,32 @@ namespace SoftBodyDynamics.Authoring
                  + "Quadratic: also bending and twisting within one cluster (costs 324 bytes per cluster). Default Linear.")]
         public ShapeMatchingMode mode = k_Jelly.Mode;
 
-        [Tooltip("Stiffness α: fraction of the way back to the goal shape covered per frame (0–1, independent of the substep "
-                 + "count). 1 = stiff, 0.05 = very soft. Jelly 0.15.")]
-        [Range(0f, 1f)]
-        public float stiffness = k_Jelly.Stiffness;
+        [Tooltip("Natural frequency (Hz) at which the body springs back to its shape: a time, so the material is the same at "
+                 + "any frame rate and substep count. 2 = soft jelly, 20 = firm rubber. Shear and stretch the goals follow "
+                 + "(Beta) wobble at Frequency·√(1 − Beta). Jelly 7.7 Hz.")]
+        [Range(0f, 100f)]
+        public float frequency = k_Jelly.Frequency;
 
-        [Tooltip("β: how much of the linear or quadratic deformation the goal shape keeps (0–1). 0 = rigid goals, "
-                 + "1 = the body may shear and stretch freely. Unused in Rigid mode. Jelly 0.6.")]
+        [Tooltip("Damping ratio ζ of the wobble (dimensionless): 0 = wobbles forever, 0.1 = many visible wobbles, 1 = returns "
+                 + "without overshoot. Falling and spinning are never damped. Jelly 0.13.")]
+        [Range(0f, 2f)]
+        public float dampingRatio = k_Jelly.DampingRatio;
+
+        [Tooltip("β: how much of the linear or quadratic deformation the goal shape keeps (0–1; above 0.99 acts as 0.99). "
+                 + "0 = rigid goals, near 1 = the body shears and stretches with little resistance. Unused in Rigid mode. Jelly 0.6.")]
         [Range(0f, 1f)]
         public float beta = k_Jelly.Beta;
 
-        [Tooltip("Rate at which wobbling decays (1/s). Only motion that differs from the body's rigid motion is damped, so "
-                 + "falling and spinning are untouched. 0 = none. Jelly 3.")]
-        [Min(0f)]
-        public float damping = k_Jelly.Damping;
-
-        [Tooltip("Simulation substeps per fixed step (1–64). More: stiffer contacts and less tunnelling, at proportional cost. Default 4.")]
+        [Tooltip("Fewest simulation substeps per fixed step (1–64). The solver adds substeps until Frequency·2π·substep ≤ "
+                 + "Max Substep Phase. More: stiffer contacts and less tunnelling, at proportional cost. Default 4.")]
         [Range(ShapeMatchingParameterValidation.MinSubsteps, ShapeMatchingParameterValidation.MaxSubsteps)]
         public int substeps = k_Solver.Substeps;
+
+        [Tooltip("Largest phase ω·h (rad) of one substep; the solver uses as many substeps as that needs (up to 64). It bounds "
+                 + "the error of the resting sag (about ζ·ω·h + (ω·h)²/12 relative); frequency and damping are exact at any step. "
+                 + "Smaller: more accurate, slower. Default 0.5 rad.")]
+        [Min(0.001f)]
+        public float maxSubstepPhase = k_Solver.MaxSubstepPhase;
 
         [Tooltip("Uniform acceleration on every particle (m/s²): gravity plus any wind-like force per mass. Default (0, −9.81, 0).")]
         public Vector3 gravity = UnityMathConversions.ToVector3(k_Solver.Acceleration);
@@ -117,6 +126,11 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Restitution e of contacts (0–1): 0 = no bounce, 1 = perfectly elastic bounce. Jelly 0.2.")]
         [Range(0f, 1f)]
         public float restitution = k_Jelly.Restitution;
+
+        [Tooltip("Speed (m/s) at which particles that start a step inside a collider are pushed out: a body spawned inside a "
+                 + "collider leaves it at this speed instead of being shot out. Default 2 m/s.")]
+        [Min(0.001f)]
+        public float maxDepenetrationSpeed = k_Solver.MaxDepenetrationSpeed;
 
         // ---- Sleep
 
@@ -159,11 +173,13 @@ namespace SoftBodyDynamics.Authoring
         public ShapeMatchingParameters Parameters => new ShapeMatchingParameters
         {
             Mode = mode,
-            Stiffness = stiffness,
+            Frequency = frequency,
+            DampingRatio = dampingRatio,
             Beta = beta,
-            Damping = damping,
             Acceleration = UnityMathConversions.ToFloat3(gravity),
             Substeps = substeps,
+            MaxSubstepPhase = maxSubstepPhase,
+            MaxDepenetrationSpeed = maxDepenetrationSpeed,
             ParticleRadius = particleRadius,
             Friction = friction,
             Restitution = restitution,
@@ -182,6 +198,21 @@ namespace SoftBodyDynamics.Authoring
 
         /// <summary>Writes <paramref name="value"/>'s material values into this component and selects it.</summary>
         public void ApplyPreset(SoftBodyPreset value) => SoftBodyPresets.Apply(this, value);
+
+        // ---- Migration from 0.2 (per-frame stiffness α and a damping rate), read from the old field names.
+
+        /// <summary>0.2's stiffness α of a component saved by that version; −1 once migrated or for a new component.</summary>
+        [SerializeField, HideInInspector, FormerlySerializedAs("stiffness")]
+        public float legacyStiffness = -1f;
+
+        /// <summary>0.2's damping rate (1/s) of a component saved by that version; −1 once migrated or for a new component.</summary>
+        [SerializeField, HideInInspector, FormerlySerializedAs("damping")]
+        public float legacyDamping = -1f;
+
+        void ISerializationCallbackReceiver.OnBeforeSerialize() { }
+
+        /// <summary>A component saved by 0.2 keeps its material: see <see cref="SoftBodyPresets.MigrateLegacyStiffness"/>.</summary>
+        void ISerializationCallbackReceiver.OnAfterDeserialize() => SoftBodyPresets.MigrateLegacyStiffness(this);
 
         void OnValidate() => SoftBodyPresets.Synchronize(this);
     }

@@ -1,7 +1,7 @@
 namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
-    /// Named material settings for a soft body. Picking a preset sets the mode, stiffness, β, damping,
+    /// Named material settings for a soft body. Picking a preset sets the mode, frequency, damping ratio, β,
     /// plasticity, friction and restitution (see <see cref="SoftBodyPresets"/>); editing any of those by hand
     /// turns the preset to <see cref="Custom"/>. The values are stable (they are serialized).
     /// </summary>

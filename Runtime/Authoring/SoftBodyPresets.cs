@@ -35,9 +35,9 @@ namespace SoftBodyDynamics.Authoring
             {
                 ShapeMatchingMaterial v = Get(preset);
                 authoring.mode = v.Mode;
-                authoring.stiffness = v.Stiffness;
+                authoring.frequency = v.Frequency;
+                authoring.dampingRatio = v.DampingRatio;
                 authoring.beta = v.Beta;
-                authoring.damping = v.Damping;
                 authoring.plasticYield = v.Plasticity.Yield;
                 authoring.plasticCreep = v.Plasticity.Creep;
                 authoring.plasticMaxDeformation = v.Plasticity.MaxDeformation;
@@ -55,7 +55,7 @@ namespace SoftBodyDynamics.Authoring
                 return true;
             ShapeMatchingMaterial v = Get(preset);
             return authoring.mode == v.Mode
-                   && Near(authoring.stiffness, v.Stiffness) && Near(authoring.beta, v.Beta) && Near(authoring.damping, v.Damping)
+                   && Near(authoring.frequency, v.Frequency) && Near(authoring.dampingRatio, v.DampingRatio) && Near(authoring.beta, v.Beta)
                    && Near(authoring.plasticYield, v.Plasticity.Yield) && Near(authoring.plasticCreep, v.Plasticity.Creep)
                    && Near(authoring.plasticMaxDeformation, v.Plasticity.MaxDeformation)
                    && Near(authoring.friction, v.Friction) && Near(authoring.restitution, v.Restitution);
@@ -71,6 +71,39 @@ namespace SoftBodyDynamics.Authoring
                 Apply(authoring, authoring.preset);
             else if (!Matches(authoring, authoring.preset))
                 Apply(authoring, SoftBodyPreset.Custom);
+        }
+
+        /// <summary>
+        /// The 1/60 s fixed step 0.2 bodies were tuned at (the default of Entities' fixed-step group): their α is
+        /// converted at this step.
+        /// </summary>
+        public const float LegacyTimeStep = 1f / 60f;
+
+        /// <summary>
+        /// Converts the per-frame stiffness α and damping rate a 0.2 component was saved with
+        /// (<see cref="SoftBodyAuthoring.legacyStiffness"/>) into the frequency and damping ratio that behave the
+        /// same at the 1/60 s step and the component's substeps (<see cref="LegacyStiffness.ToFrequency"/>). A
+        /// component that still named a preset simply takes the preset's new values (they were derived the same way).
+        /// Runs once: the legacy fields are cleared.
+        /// </summary>
+        public static void MigrateLegacyStiffness(SoftBodyAuthoring authoring)
+        {
+            if (authoring.legacyStiffness < 0f)
+                return;
+            if (authoring.preset != SoftBodyPreset.Custom)
+            {
+                ShapeMatchingMaterial v = Get(authoring.preset);
+                authoring.frequency = v.Frequency;
+                authoring.dampingRatio = v.DampingRatio;
+            }
+            else if (LegacyStiffness.ToFrequency(authoring.legacyStiffness, Math.Max(0f, authoring.legacyDamping),
+                         authoring.substeps, LegacyTimeStep, out float f, out float zeta))
+            {
+                authoring.frequency = f;
+                authoring.dampingRatio = zeta;
+            }
+            authoring.legacyStiffness = -1f;
+            authoring.legacyDamping = -1f;
         }
 
         static bool Near(float a, float b) => Math.Abs(a - b) <= MatchTolerance;

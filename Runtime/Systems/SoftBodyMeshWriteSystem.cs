@@ -79,7 +79,7 @@ namespace SoftBodyDynamics
                 var scratch = new NativeArray<float3>(2 * n, Allocator.Temp, NativeArrayOptions.UninitializedMemory);
                 System.Span<float3> s = scratch.AsSpan();
                 AxisAlignedBox box = MeshDeformation.Deform(positions.Reinterpret<float3>().AsNativeArray().AsReadOnlySpan(),
-                    blob.VertexToParticleSpan, blob.TrianglesSpan, body.Status.Center, body.Status.Rotation,
+                    blob.VertexToParticleSpan, blob.TrianglesSpan, body.Status.LocalCenter, body.Status.Rotation,
                     blob.BodyRest.RestCenter, s.Slice(0, n), s.Slice(n, n),
                     vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan());
                 scratch.Dispose();

@@ -56,7 +56,7 @@ namespace SoftBodyDynamics
                 var x = positions.Reinterpret<float3>().AsNativeArray();
                 var v = velocities.Reinterpret<float3>().AsNativeArray();
                 for (int i = 0; i < v.Length && i < x.Length; i++)
-                    v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - body.Status.Center);
+                    v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - body.Status.LocalCenter);
                 ShapeMatchingSolver.Wake(ref body.Status);
                 pending.ValueRW = false;
             }

@@ -174,12 +174,42 @@ namespace SoftBodyDynamics.Tests.Editor
         }
 
         [Test]
-        public void Validate_StiffnessAboveOne_ReportsStiffnessOutOfRange()
+        public void Validate_NegativeFrequency_ReportsFrequencyOutOfRange()
         {
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
-            body.stiffness = 2f;
+            body.frequency = -2f;
 
-            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain(SoftBodyIssueCode.StiffnessOutOfRange));
+            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain(SoftBodyIssueCode.FrequencyOutOfRange));
+        }
+
+        [Test]
+        public void MigrateLegacyStiffness_CustomBody_KeepsItsFrequencyAt60Hz()
+        {
+            SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
+            body.ApplyPreset(SoftBodyPreset.Custom);
+            body.substeps = 4;
+            body.legacyStiffness = 0.15f;
+            body.legacyDamping = 3f;
+
+            SoftBodyPresets.MigrateLegacyStiffness(body);
+
+            Assert.That(LegacyStiffness.ToFrequency(0.15f, 3f, 4, SoftBodyPresets.LegacyTimeStep, out float f, out float zeta), Is.True);
+            Assert.That(body.frequency, Is.EqualTo(f));
+            Assert.That(body.dampingRatio, Is.EqualTo(zeta));
+            Assert.That(body.legacyStiffness, Is.EqualTo(-1f), "migrates once");
+        }
+
+        [Test]
+        public void MigrateLegacyStiffness_PresetBody_TakesThePresetsNewValues()
+        {
+            SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
+            body.ApplyPreset(SoftBodyPreset.Rubber);
+            body.legacyStiffness = 0.6f;
+            body.legacyDamping = 4f;
+
+            SoftBodyPresets.MigrateLegacyStiffness(body);
+
+            Assert.That(SoftBodyPresets.Matches(body, SoftBodyPreset.Rubber), Is.True);
         }
 
         [Test]
@@ -215,7 +245,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Jelly);
 
-            AssertMaterial(body, ShapeMatchingMode.Linear, 0.15f, 0.6f, 3f, 0f, 0f, 0f, 0.4f, 0.2f);
+            AssertMaterial(body, ShapeMatchingMode.Linear, 7.7f, 0.13f, 0.6f, 0f, 0f, 0f, 0.4f, 0.2f);
             Assert.That(body.preset, Is.EqualTo(SoftBodyPreset.Jelly));
         }
 
@@ -225,7 +255,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Rubber);
 
-            AssertMaterial(body, ShapeMatchingMode.Linear, 0.6f, 0.3f, 4f, 0f, 0f, 0f, 1f, 0.7f);
+            AssertMaterial(body, ShapeMatchingMode.Linear, 18.5f, 0.25f, 0.3f, 0f, 0f, 0f, 1f, 0.7f);
             Assert.That(body.preset, Is.EqualTo(SoftBodyPreset.Rubber));
         }
 
@@ -235,7 +265,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Clay);
 
-            AssertMaterial(body, ShapeMatchingMode.Linear, 0.4f, 0.8f, 8f, 0.05f, 10f, 0.6f, 0.9f, 0f);
+            AssertMaterial(body, ShapeMatchingMode.Linear, 13.8f, 0.22f, 0.8f, 0.05f, 10f, 0.6f, 0.9f, 0f);
             Assert.That(body.Parameters.Plasticity.Enabled, Is.True);
         }
 
@@ -253,12 +283,12 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.ApplyPreset(SoftBodyPreset.Rubber);
-            body.stiffness = 0.33f;
+            body.frequency = 3.3f;
 
             SoftBodyPresets.Synchronize(body);
 
             Assert.That(body.preset, Is.EqualTo(SoftBodyPreset.Custom));
-            Assert.That(body.stiffness, Is.EqualTo(0.33f));
+            Assert.That(body.frequency, Is.EqualTo(3.3f));
         }
 
         [Test]
@@ -286,13 +316,13 @@ namespace SoftBodyDynamics.Tests.Editor
             }
         }
 
-        static void AssertMaterial(SoftBodyAuthoring body, ShapeMatchingMode mode, float stiffness, float beta, float damping,
+        static void AssertMaterial(SoftBodyAuthoring body, ShapeMatchingMode mode, float frequency, float dampingRatio, float beta,
             float yield, float creep, float maxDeformation, float friction, float restitution)
         {
             Assert.That(body.mode, Is.EqualTo(mode), "mode");
-            Assert.That(body.stiffness, Is.EqualTo(stiffness), "stiffness");
+            Assert.That(body.frequency, Is.EqualTo(frequency), "frequency");
+            Assert.That(body.dampingRatio, Is.EqualTo(dampingRatio), "damping ratio");
             Assert.That(body.beta, Is.EqualTo(beta), "beta");
-            Assert.That(body.damping, Is.EqualTo(damping), "damping");
             Assert.That(body.plasticYield, Is.EqualTo(yield), "yield");
             Assert.That(body.plasticCreep, Is.EqualTo(creep), "creep");
             Assert.That(body.plasticMaxDeformation, Is.EqualTo(maxDeformation), "max deformation");

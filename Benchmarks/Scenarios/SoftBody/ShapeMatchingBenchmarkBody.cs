@@ -30,12 +30,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Particle radius of every benchmark body (m): half the spacing, so neighbouring particles touch.</summary>
         public static float ParticleRadius(int edge, float size) => 0.5f * Spacing(edge, size);
 
-        /// <summary>Stiffness α of every benchmark body (the default jelly's).</summary>
-        public const float Stiffness = 0.2f;
+        /// <summary>Natural frequency (Hz) of every benchmark body (the default jelly's).</summary>
+        public const float Frequency = 9f;
+        /// <summary>Damping ratio of every benchmark body (the default jelly's).</summary>
+        public const float DampingRatio = 0.13f;
         /// <summary>Blend β of the linear or quadratic transform (the default jelly's).</summary>
         public const float Beta = 0.5f;
-        /// <summary>Damping rate (1/s) of every benchmark body (the default jelly's).</summary>
-        public const float Damping = 1f;
+        /// <summary>
+        /// Substep phase limit of the benchmarks (rad): large enough that the step takes exactly the requested
+        /// substeps, so the substep count is the cost axis the sweeps set.
+        /// </summary>
+        public const float NoSubstepFloor = 1000f;
         /// <summary>Friction coefficient against the floor (the default jelly's).</summary>
         public const float Friction = 0.5f;
         /// <summary>Restitution against the floor (the default jelly's).</summary>
@@ -43,17 +48,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary>
         /// The default jelly's settings, pinned here so the benchmarks measure the same body when the defaults
-        /// change (α = 0.2, β = 0.5, damping 1/s, friction 0.5, restitution 0.1, no plasticity), with the given
-        /// mode, substeps, acceleration (m/s²) and particle radius (m, <see cref="ParticleRadius"/>), and no
-        /// sleeping, so every step does the full work.
+        /// change (9 Hz, ζ = 0.13, β = 0.5, friction 0.5, restitution 0.1, no plasticity), with the given
+        /// mode, exactly the given substeps (<see cref="NoSubstepFloor"/>), acceleration (m/s²) and particle radius
+        /// (m, <see cref="ParticleRadius"/>), and no sleeping, so every step does the full work.
         /// </summary>
         public static ShapeMatchingParameters Parameters(ShapeMatchingMode mode, int substeps, float3 acceleration, float particleRadius)
         {
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.Stiffness = Stiffness;
+            p.Frequency = Frequency;
+            p.DampingRatio = DampingRatio;
             p.Beta = Beta;
-            p.Damping = Damping;
+            p.MaxSubstepPhase = NoSubstepFloor;
             p.Friction = Friction;
             p.Restitution = Restitution;
             p.Plasticity = PlasticityParameters.None;

@@ -8,12 +8,12 @@ namespace SoftBodyDynamics.Solvers
     public static class ShapeMatchingParameterValidation
     {
         /// <summary>Fewest and most substeps per step.</summary>
-        public const int MinSubsteps = 1, MaxSubsteps = 64;
+        public const int MinSubsteps = 1, MaxSubsteps = ShapeMatchingParameters.MaxSubsteps;
 
         /// <summary>Largest plausible particle radius (m); a larger one is nearly always a unit mistake.</summary>
         public const float MaxParticleRadius = 100f;
 
-        /// <summary>Appends an issue for every bad field (an error, or a warning for stiffness 0); returns true when no error was added.</summary>
+        /// <summary>Appends an issue for every bad field (an error, or a warning for values that work but do less than they say); returns true when no error was added.</summary>
         public static bool Validate(in ShapeMatchingParameters p, List<SoftBodyIssue> issues)
         {
             int before = issues.Count;
@@ -21,18 +21,33 @@ namespace SoftBodyDynamics.Solvers
             if ((uint)p.Mode > (uint)ShapeMatchingMode.Quadratic)
                 Error(issues, SoftBodyIssueCode.ModeInvalid, Invariant($"Mode is {(int)p.Mode}, which is not Rigid, Linear or Quadratic."));
 
-            if (Finite(issues, "Stiffness", p.Stiffness, "in [0, 1]"))
+            if (Finite(issues, "Frequency", p.Frequency, "in Hz"))
             {
-                if (p.Stiffness < 0f || p.Stiffness > 1f)
-                    Error(issues, SoftBodyIssueCode.StiffnessOutOfRange, Invariant($"Stiffness is {p.Stiffness}; it must be in [0, 1] (1 = stiff, 0.05 = very soft)."));
-                else if (p.Stiffness == 0f)
-                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.StiffnessZero, -1,
-                        "Stiffness is 0: the body will not hold its shape and collapses like loose particles. Use a value above 0 (0.05 = very soft)."));
+                if (p.Frequency < 0f || p.Frequency > ShapeMatchingParameters.MaxFrequency)
+                    Error(issues, SoftBodyIssueCode.FrequencyOutOfRange, Invariant(
+                        $"Frequency is {p.Frequency} Hz; it must be from 0 to {ShapeMatchingParameters.MaxFrequency} Hz (2 Hz = soft jelly, 20 Hz = firm rubber)."));
+                else if (p.Frequency == 0f)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FrequencyZero, -1,
+                        "Frequency is 0 Hz: the body will not hold its shape and collapses like loose particles. Use a value above 0 (2 Hz = soft jelly)."));
             }
-            if (Finite(issues, "Beta", p.Beta, "in [0, 1]") && (p.Beta < 0f || p.Beta > 1f))
-                Error(issues, SoftBodyIssueCode.BetaOutOfRange, Invariant($"Beta is {p.Beta}; it must be in [0, 1] (0 = rigid goals, 1 = fully deformable)."));
-            if (Finite(issues, "Damping", p.Damping, "of at least 0 1/s") && p.Damping < 0f)
-                Error(issues, SoftBodyIssueCode.DampingNegative, Invariant($"Damping is {p.Damping} 1/s; it must be at least 0 (negative damping adds energy)."));
+            if (Finite(issues, "Beta", p.Beta, "in [0, 1]"))
+            {
+                if (p.Beta < 0f || p.Beta > 1f)
+                    Error(issues, SoftBodyIssueCode.BetaOutOfRange, Invariant($"Beta is {p.Beta}; it must be in [0, 1] (0 = rigid goals, 1 = fully deformable)."));
+                else if (p.Beta > ShapeMatchingParameters.MaxBeta && p.Mode != ShapeMatchingMode.Rigid)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.BetaLimited, -1, Invariant(
+                        $"Beta is {p.Beta}; it acts as {ShapeMatchingParameters.MaxBeta}: at 1 the shear and stretch the goals follow have no restoring force, and round-off would drift them without bound.")));
+            }
+            if (Finite(issues, "DampingRatio", p.DampingRatio, "of at least 0")
+                && (p.DampingRatio < 0f || p.DampingRatio > ShapeMatchingParameters.MaxDampingRatio))
+                Error(issues, SoftBodyIssueCode.DampingRatioOutOfRange, Invariant(
+                    $"DampingRatio is {p.DampingRatio}; it must be from 0 to {ShapeMatchingParameters.MaxDampingRatio} (0 = undamped, 1 = critically damped; negative damping adds energy)."));
+            if (Finite(issues, "MaxSubstepPhase", p.MaxSubstepPhase, "above 0 rad") && p.MaxSubstepPhase <= 0f)
+                Error(issues, SoftBodyIssueCode.MaxSubstepPhaseNotPositive, Invariant(
+                    $"MaxSubstepPhase is {p.MaxSubstepPhase} rad; it must be above 0 (default {ShapeMatchingParameters.Default.MaxSubstepPhase} rad)."));
+            if (Finite(issues, "MaxDepenetrationSpeed", p.MaxDepenetrationSpeed, "above 0 m/s") && p.MaxDepenetrationSpeed <= 0f)
+                Error(issues, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive, Invariant(
+                    $"MaxDepenetrationSpeed is {p.MaxDepenetrationSpeed} m/s; it must be above 0 (default {ShapeMatchingParameters.Default.MaxDepenetrationSpeed} m/s), or a body inside a collider never leaves it."));
             Finite(issues, "Acceleration.x", p.Acceleration.x, "in m/s²");
             Finite(issues, "Acceleration.y", p.Acceleration.y, "in m/s²");
             Finite(issues, "Acceleration.z", p.Acceleration.z, "in m/s²");
@@ -48,6 +63,9 @@ namespace SoftBodyDynamics.Solvers
             Plasticity(issues, "Plasticity.Yield", p.Plasticity.Yield);
             Plasticity(issues, "Plasticity.Creep", p.Plasticity.Creep);
             Plasticity(issues, "Plasticity.MaxDeformation", p.Plasticity.MaxDeformation);
+            if (p.Mode == ShapeMatchingMode.Rigid && p.Plasticity.Enabled)
+                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.PlasticityIgnoredInRigidMode, -1,
+                    "Plasticity is set, but the mode is Rigid: rigid goals cannot hold a dent, so the body stays elastic. Use Linear or Quadratic for plastic bodies."));
             if (Finite(issues, "SleepSpeed", p.SleepSpeed, "of at least 0 m/s") && p.SleepSpeed < 0f)
                 Error(issues, SoftBodyIssueCode.SleepSpeedNegative, Invariant($"SleepSpeed is {p.SleepSpeed} m/s; it must be at least 0 (0 = never sleeps)."));
             if (Finite(issues, "SleepDelay", p.SleepDelay, "of at least 0 s") && p.SleepDelay < 0f)

@@ -58,14 +58,14 @@ namespace SoftBodyDynamics.Solvers
         ParameterNotFinite = 60,
         /// <summary>The shape-matching mode is not one of the defined values.</summary>
         ModeInvalid = 61,
-        /// <summary>Stiffness α outside [0, 1].</summary>
-        StiffnessOutOfRange = 62,
-        /// <summary>Warning: stiffness α = 0, so the body will not hold its shape.</summary>
-        StiffnessZero = 63,
+        /// <summary>Frequency below 0 Hz or above <see cref="ShapeMatchingParameters.MaxFrequency"/>.</summary>
+        FrequencyOutOfRange = 62,
+        /// <summary>Warning: frequency 0 Hz, so the body will not hold its shape.</summary>
+        FrequencyZero = 63,
         /// <summary>β outside [0, 1].</summary>
         BetaOutOfRange = 64,
-        /// <summary>Damping below 0.</summary>
-        DampingNegative = 65,
+        /// <summary>Damping ratio below 0 or above <see cref="ShapeMatchingParameters.MaxDampingRatio"/>.</summary>
+        DampingRatioOutOfRange = 65,
         /// <summary>Substeps outside 1..64.</summary>
         SubstepsOutOfRange = 66,
         /// <summary>Particle radius not positive, or implausibly large.</summary>
@@ -84,6 +84,14 @@ namespace SoftBodyDynamics.Solvers
         MaxSpeedNotPositive = 73,
         /// <summary>Rotation iterations below 1.</summary>
         RotationIterationsInvalid = 74,
+        /// <summary>Warning: β above <see cref="ShapeMatchingParameters.MaxBeta"/> acts as <see cref="ShapeMatchingParameters.MaxBeta"/>.</summary>
+        BetaLimited = 75,
+        /// <summary>Maximum substep phase not positive.</summary>
+        MaxSubstepPhaseNotPositive = 76,
+        /// <summary>Maximum depenetration speed not positive.</summary>
+        MaxDepenetrationSpeedNotPositive = 77,
+        /// <summary>Warning: plasticity is set but the mode is Rigid, whose goals cannot hold a deformed rest shape: it has no effect.</summary>
+        PlasticityIgnoredInRigidMode = 78,
 
         // Colliders (SoftBodyColliderAuthoring).
         /// <summary>The collider shape is not one of plane, sphere, box or capsule.</summary>

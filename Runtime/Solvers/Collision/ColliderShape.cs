@@ -42,6 +42,16 @@ namespace SoftBodyDynamics.Solvers
         public static ColliderShape Box(float3 center, quaternion rotation, float3 halfExtents) => new ColliderShape
             { Type = ColliderShapeType.Box, Center = center, Rotation = math.normalizesafe(rotation), HalfExtents = halfExtents };
 
+        /// <summary>The same collider moved by <paramref name="offset"/> (m): used to see it from a body's origin.</summary>
+        public ColliderShape Translated(float3 offset)
+        {
+            ColliderShape c = this;
+            c.Center += offset;
+            if (Type == ColliderShapeType.Capsule)
+                c.Axis += offset;
+            return c;
+        }
+
         public static ColliderShape Capsule(float3 pointA, float3 pointB, float radius) => new ColliderShape
             { Type = ColliderShapeType.Capsule, Center = pointA, Axis = pointB, Radius = radius, Rotation = quaternion.identity };
     }

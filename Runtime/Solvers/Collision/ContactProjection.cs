@@ -14,20 +14,44 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Distance off the surface, as a fraction of the particle radius, from which a particle counts as arriving.</summary>
         const float k_ArrivalFraction = 0.1f;
 
+        /// <summary>What a substep's contacts need besides the particles and colliders.</summary>
+        public struct Settings
+        {
+            /// <summary>Particle radius (m).</summary>
+            public float Radius;
+            /// <summary>Coulomb friction coefficient μ.</summary>
+            public float Friction;
+            /// <summary>Restitution e ∈ [0, 1].</summary>
+            public float Restitution;
+            /// <summary>Approach speed (m/s) below which an arriving particle does not bounce.</summary>
+            public float BounceThreshold;
+            /// <summary>
+            /// Most of a particle's overlap at the start of the substep removed in one substep (m): a body that
+            /// starts inside a collider leaves at MaxDepenetration / h. Overlap the substep's own motion created is
+            /// always removed. Infinity = no cap.
+            /// </summary>
+            public float MaxDepenetration;
+            /// <summary>World position of the particles' origin (m): colliders are in world space, particles relative to it.</summary>
+            public float3 Origin;
+        }
+
         /// <summary>
         /// Projects <paramref name="predicted"/> out of the colliders and adds each push to the velocity
         /// (Δv = Δx/h); a particle that arrives at a surface (from more than a tenth of its radius away) at
-        /// v⁻ₙ = v·n &lt; −<paramref name="bounceThreshold"/> leaves it at −e·v⁻ₙ. Writes each particle's contact normal (zero when free) to
-        /// <paramref name="contactNormals"/>. Returns the number of particles in contact.
+        /// v⁻ₙ = v·n &lt; −BounceThreshold leaves it at −e·v⁻ₙ. Of the overlap a particle already had at the
+        /// start of the substep, at most <see cref="Settings.MaxDepenetration"/> is removed per substep, so a
+        /// body spawned inside a collider is not shot out of it. Writes each particle's contact normal (zero when
+        /// free) to <paramref name="contactNormals"/>. Returns the number of particles in contact.
         /// </summary>
-        /// <param name="previous">Positions at the start of the substep (for the swept test and friction).</param>
+        /// <param name="previous">Positions at the start of the substep (for the swept test, friction and the depenetration cap).</param>
         /// <param name="h">Substep (s).</param>
         public static int Project(ReadOnlySpan<float3> previous, Span<float3> predicted, Span<float3> velocities,
-            Span<float3> contactNormals, ReadOnlySpan<ColliderShape> colliders, float radius, float friction, float h,
-            float restitution, float bounceThreshold)
+            Span<float3> contactNormals, ReadOnlySpan<ColliderShape> colliders, in Settings settings, float h)
         {
             int contacts = 0;
             float invH = 1f / h;
+            float radius = settings.Radius;
+            bool rebased = math.any(settings.Origin != float3.zero);
             for (int i = 0; i < predicted.Length; i++)
             {
                 float3 start = predicted[i];
@@ -35,15 +59,16 @@ namespace SoftBodyDynamics.Solvers
                 float3 contactNormal = float3.zero;
                 for (int c = 0; c < colliders.Length; c++)
                 {
+                    ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
                     float3 n;
                     float depth;
                     // Pushed along the normal of the closest surface point, except when the swept test shows
                     // the particle came through a box face that the closest point contradicts: its centre
                     // ended inside the box (the nearest face may be the far one) or beyond a thin box
                     // (the closest point is on the far side). Then it leaves through the face it entered.
-                    bool hit = ParticleCollision.Penetration(colliders[c], x, radius, out n, out depth, out bool deep);
-                    if (colliders[c].Type == ColliderShapeType.Box
-                        && ParticleCollision.Sweep(colliders[c], previous[i], x, radius, out float3 entry, out float3 face)
+                    bool hit = ParticleCollision.Penetration(collider, x, radius, out n, out depth, out bool deep);
+                    if (collider.Type == ColliderShapeType.Box
+                        && ParticleCollision.Sweep(collider, previous[i], x, radius, out float3 entry, out float3 face)
                         && (!hit || deep || math.dot(n, face) < 0f))
                     {
                         n = face;
@@ -51,12 +76,18 @@ namespace SoftBodyDynamics.Solvers
                     }
                     else if (!hit)
                         continue;
+                    // Overlap carried over from the start of the substep leaves at a bounded speed.
+                    if (ParticleCollision.Penetration(collider, previous[i], radius, out _, out float startDepth)
+                        && startDepth > settings.MaxDepenetration)
+                        depth = math.min(depth, math.max(0f, depth - (startDepth - settings.MaxDepenetration)));
+                    if (!(depth > 0f))
+                        continue;
                     x += depth * n;
                     // Friction: cancel tangential motion of this substep, at most μ·depth.
                     float3 motion = x - previous[i];
                     float3 tangential = motion - math.dot(motion, n) * n;
                     float slide = math.length(tangential);
-                    float limit = friction * depth;
+                    float limit = settings.Friction * depth;
                     if (slide > 0f)
                         x -= tangential * math.min(1f, limit / slide);
                     contactNormal = n;
@@ -71,8 +102,8 @@ namespace SoftBodyDynamics.Solvers
                 // radius off the surface. A resting particle the goal pull presses into the floor would
                 // otherwise bounce every substep and never settle.
                 bool arriving = math.dot(previous[i] - x, contactNormal) > k_ArrivalFraction * radius;
-                if (arriving && approach < -bounceThreshold)
-                    v += (-restitution * approach - math.dot(v, contactNormal)) * contactNormal;
+                if (arriving && approach < -settings.BounceThreshold)
+                    v += (-settings.Restitution * approach - math.dot(v, contactNormal)) * contactNormal;
                 velocities[i] = v;
                 predicted[i] = x;
             }

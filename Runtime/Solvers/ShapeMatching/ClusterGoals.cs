@@ -15,12 +15,17 @@ namespace SoftBodyDynamics.Solvers
             public int Fallbacks;
             public int MaxIterations;
             public int PlasticUpdates;
+            /// <summary>Plasticity was asked for in quadratic mode without per-instance quadratic inverses, so it did not flow.</summary>
+            public bool PlasticityUnavailable;
         }
 
         /// <summary>
         /// Writes the averaged goal of every particle into <c>state.Goals</c> from the positions <paramref name="x"/>
         /// (particles in no cluster get their own position). When <paramref name="plasticStep"/> &gt; 0
-        /// the clusters also flow plastically over that time (s).
+        /// the clusters also flow plastically over that time (s): only in the linear and quadratic modes, whose
+        /// goals can hold a deformed rest shape (rigid goals cannot deform, so nothing there may flow), and in
+        /// quadratic mode only when the state has its own quadratic inverses to rewrite
+        /// (<see cref="Counters.PlasticityUnavailable"/> otherwise: the body stays elastic rather than falling back to linear goals).
         /// </summary>
         public static Counters Compute(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
             System.ReadOnlySpan<float3> x, float plasticStep)
@@ -29,10 +34,16 @@ namespace SoftBodyDynamics.Solvers
             var goals = state.Goals;
             for (int i = 0; i < goals.Length; i++)
                 goals[i] = model.InverseClusterCounts[i] > 0f ? float3.zero : x[i];
-            bool plastic = plasticStep > 0f && p.Plasticity.Enabled;
             bool quadraticReady = model.HasQuadratic;
             var quadraticInverse = state.QuadraticInverse.Length == model.QuadraticInverse.Length
                 ? state.QuadraticInverse : default;
+            bool plasticWanted = p.Plasticity.Enabled && p.Mode != ShapeMatchingMode.Rigid;
+            if (plasticWanted && p.Mode == ShapeMatchingMode.Quadratic && quadraticReady && quadraticInverse.Length == 0)
+            {
+                counters.PlasticityUnavailable = true;
+                plasticWanted = false;
+            }
+            bool plastic = plasticStep > 0f && plasticWanted;
             for (int c = 0; c < model.ClusterCount; c++)
             {
                 ref ClusterState cluster = ref state.Clusters[c];
@@ -133,8 +144,10 @@ namespace SoftBodyDynamics.Solvers
             r = new float3x3(cluster.Rotation);
             aLinear = cluster.Rest.LinearValid ? math.mul(p0, cluster.Rest.AqqInverse) * (length * length) : r;
             QuadraticShapeMatching.Transform(p0, p1, p2, inverseBlocks, out float3x3 t0, out float3x3 t1, out float3x3 t2);
+            // Volume: the linear block is normalised to det Ã₀ = 1 as in the linear mode (§4.3), so the quadratic
+            // goals neither grow nor shrink the cluster; a degenerate or inverted block contributes no linear strain.
+            float3x3 s0 = VolumePreservation.TryNormalize(t0, out float3x3 t0Normalized) ? t0Normalized - r : float3x3.zero;
             // β blend of the 3×9 strain [Ã₀ − R, Ã₁, Ã₂], limited like the linear mode's.
-            float3x3 s0 = t0 - r;
             float strain = math.sqrt(SquaredNorm(s0) + SquaredNorm(t1) + SquaredNorm(t2));
             float beta = math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
             float3x3 g0 = r + beta * s0, g1 = beta * t1, g2 = beta * t2;

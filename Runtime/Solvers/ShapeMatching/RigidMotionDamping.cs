@@ -11,8 +11,10 @@ namespace SoftBodyDynamics.Solvers
     public static class RigidMotionDamping
     {
         /// <summary>
-        /// (I + 10⁻⁶ tr I · 1)⁻¹ about <paramref name="xcm"/>: a rod or a point has a singular inertia
-        /// tensor, and the tiny shift keeps ω finite. Zero for a body of zero extent.
+        /// I⁻¹ about <paramref name="xcm"/>. A rod or a point has a singular inertia tensor: when det I is below
+        /// 10⁻⁶ (tr I / 3)³, I + 10⁻⁶ tr I · 1 is inverted instead, which keeps ω finite. The shift is not applied to
+        /// a well-conditioned body, where it would bias ω by 10⁻⁶ relative at every call and, with strong damping,
+        /// drain angular momentum. Zero for a body of zero extent.
         /// </summary>
         public static float3x3 InverseInertia(ReadOnlySpan<float3> x, ReadOnlySpan<float> mass, float3 xcm)
         {
@@ -25,6 +27,9 @@ namespace SoftBodyDynamics.Solvers
             float trace = inertia.c0.x + inertia.c1.y + inertia.c2.z;
             if (!(trace > 0f))
                 return float3x3.zero;
+            float third = trace / 3f;
+            if (math.determinant(inertia) > 1e-6f * third * third * third)
+                return math.inverse(inertia);
             return math.inverse(inertia + (1e-6f * trace) * float3x3.identity);
         }
 

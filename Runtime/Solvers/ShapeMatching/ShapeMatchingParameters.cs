@@ -8,23 +8,43 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Rigid, linear or quadratic goals.</summary>
         public ShapeMatchingMode Mode;
         /// <summary>
-        /// α ∈ [0, 1]: fraction of the way to the goal positions covered per step of <c>dt</c>
-        /// (Müller et al. 2005, eq. 3). 1 = stiff, 0.05 = very soft. Substeps use
-        /// α_sub = 1 − (1 − α)^(1/substeps), so the stiffness does not change with the substep count.
+        /// Natural frequency f (Hz) of the deformation the goals resist fully: each particle is pulled toward
+        /// its goal with the acceleration ω²(gᵢ − xᵢ), ω = 2πf, the continuous form of Müller et al. 2005,
+        /// eq. 3. A time, not a per-frame fraction: the same f wobbles at the same rate and sags by the same
+        /// amount at any frame rate and substep count (<see cref="OscillatorDiscretization"/>). Deformations the
+        /// linear or quadratic transform follows are resisted by (1 − β): they oscillate at f·√(1 − β).
+        /// 2 Hz = soft jelly, 20 Hz = firm rubber.
         /// </summary>
-        public float Stiffness;
-        /// <summary>β ∈ [0, 1]: blend of the linear or quadratic transform into the rotation (eq. 8). 0 = rigid goals.</summary>
-        public float Beta;
+        public float Frequency;
         /// <summary>
-        /// Rate (1/s) at which velocity that differs from the body's rigid motion decays:
-        /// each substep vᵢ += (1 − e^(−damping·h))·(v_cm + ω × rᵢ − vᵢ). Rigid motion (momentum,
-        /// angular momentum) is untouched; wobble, sway and bending decay. 0 = none.
+        /// Damping ratio ζ (dimensionless) of the same oscillation: the velocity that differs from the body's
+        /// rigid motion decays at the rate 2ζω; rigid motion (momentum, angular momentum) is untouched.
+        /// 0 = undamped, 0.1 = wobbles for many periods, 1 = critically damped (no overshoot).
         /// </summary>
-        public float Damping;
+        public float DampingRatio;
+        /// <summary>
+        /// β ∈ [0, 1]: blend of the linear or quadratic transform into the rotation (eq. 8). 0 = rigid goals.
+        /// Values above <see cref="MaxBeta"/> act as <see cref="MaxBeta"/>.
+        /// </summary>
+        public float Beta;
         /// <summary>Uniform acceleration on every particle: gravity plus any wind-like force per mass (m/s²).</summary>
         public float3 Acceleration;
-        /// <summary>Substeps per step (1–64). More substeps: stiffer contacts, less tunnelling, more cost.</summary>
+        /// <summary>
+        /// Fewest substeps per step (1–64). The step adds substeps until ω·h ≤ <see cref="MaxSubstepPhase"/>, up to 64.
+        /// More substeps: stiffer contacts, less tunnelling, more cost.
+        /// </summary>
         public int Substeps;
+        /// <summary>
+        /// Largest phase ω·h (rad) of one substep; the step uses as many substeps as that needs (at most 64).
+        /// It bounds the error of the static sag, ≈ ζωh + (ωh)²/12 relative; frequency and decay are exact at any h.
+        /// Smaller = more accurate and slower. Default 0.5 rad.
+        /// </summary>
+        public float MaxSubstepPhase;
+        /// <summary>
+        /// Largest speed (m/s) at which a particle that starts a substep inside a collider is pushed out. A body
+        /// spawned inside a collider leaves it at this speed instead of being shot out. Default 2 m/s.
+        /// </summary>
+        public float MaxDepenetrationSpeed;
         /// <summary>Particle radius used against colliders (m).</summary>
         public float ParticleRadius;
         /// <summary>Coulomb friction coefficient μ against colliders (0 = ice, 1 = rubber on concrete).</summary>
@@ -51,11 +71,14 @@ namespace SoftBodyDynamics.Solvers
         {
             var d = Default;
             var p = this;
-            p.Stiffness = math.isnan(Stiffness) ? d.Stiffness : math.saturate(Stiffness);
-            p.Beta = math.isnan(Beta) ? d.Beta : math.saturate(Beta);
-            p.Damping = math.isfinite(Damping) ? math.max(0f, Damping) : d.Damping;
+            p.Frequency = math.isfinite(Frequency) ? math.clamp(Frequency, 0f, MaxFrequency) : d.Frequency;
+            p.DampingRatio = math.isfinite(DampingRatio) ? math.clamp(DampingRatio, 0f, MaxDampingRatio) : d.DampingRatio;
+            p.Beta = math.isnan(Beta) ? d.Beta : math.clamp(Beta, 0f, MaxBeta);
             p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
-            p.Substeps = math.clamp(Substeps, 1, 64);
+            p.Substeps = math.clamp(Substeps, 1, MaxSubsteps);
+            p.MaxSubstepPhase = MaxSubstepPhase > 0f && math.isfinite(MaxSubstepPhase) ? MaxSubstepPhase : d.MaxSubstepPhase;
+            p.MaxDepenetrationSpeed = MaxDepenetrationSpeed > 0f && math.isfinite(MaxDepenetrationSpeed)
+                ? MaxDepenetrationSpeed : d.MaxDepenetrationSpeed;
             p.ParticleRadius = math.isfinite(ParticleRadius) ? math.max(0f, ParticleRadius) : d.ParticleRadius;
             p.Friction = math.isfinite(Friction) ? math.max(0f, Friction) : d.Friction;
             p.Restitution = math.isnan(Restitution) ? d.Restitution : math.saturate(Restitution);
@@ -71,15 +94,33 @@ namespace SoftBodyDynamics.Solvers
             return p;
         }
 
-        /// <summary>A jelly-like default: linear mode, α = 0.2, β = 0.5, 4 substeps, Earth gravity.</summary>
+        /// <summary>Most substeps per step.</summary>
+        public const int MaxSubsteps = 64;
+        /// <summary>
+        /// Largest β used: at β = 1 the deformations the transform follows have no restoring force at all, and
+        /// float32 round-off of the goals (a bias of ~10⁻⁷ that is the same every substep) drifts them without
+        /// bound. At 0.99 they still oscillate at f/10 and the round-off offset stays ~10⁻⁵ of the size.
+        /// </summary>
+        public const float MaxBeta = 0.99f;
+        /// <summary>Largest frequency accepted (Hz); beyond it the body is rigid for any practical step.</summary>
+        public const float MaxFrequency = 1000f;
+        /// <summary>Largest damping ratio accepted.</summary>
+        public const float MaxDampingRatio = 100f;
+
+        /// <summary>ω = 2πf (rad/s).</summary>
+        public float AngularFrequency => 2f * math.PI * Frequency;
+
+        /// <summary>A jelly-like default: linear mode, 9 Hz, ζ = 0.13, β = 0.5, at least 4 substeps, Earth gravity.</summary>
         public static ShapeMatchingParameters Default => new ShapeMatchingParameters
         {
             Mode = ShapeMatchingMode.Linear,
-            Stiffness = 0.2f,
+            Frequency = 9f,
+            DampingRatio = 0.13f,
             Beta = 0.5f,
-            Damping = 1f,
             Acceleration = new float3(0f, -9.81f, 0f),
             Substeps = 4,
+            MaxSubstepPhase = 0.5f,
+            MaxDepenetrationSpeed = 2f,
             ParticleRadius = 0.02f,
             Friction = 0.5f,
             Restitution = 0.1f,

@@ -4,35 +4,57 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// One step of a shape-matching body (Müller, Heidelberger, Teschner &amp; Gross 2005, §3.3 and §4),
-    /// split into substeps of h = dt / substeps, each:
+    /// One step of a shape-matching body (Müller, Heidelberger, Teschner &amp; Gross 2005, §3.3 and §4) as
+    /// the time discretisation of one continuous model,
+    /// <code>
+    ///   ẍᵢ = a + ω² (gᵢ(x) − xᵢ) − 2ζω (ẋᵢ − uᵢ)
+    /// </code>
+    /// with gᵢ the goals of the clusters fitted to the positions x, uᵢ = v_cm + Ω × (xᵢ − x_cm) the body's
+    /// rigid velocity, ω = 2πf and ζ the material's frequency and damping ratio. A step of dt is split into
+    /// n substeps of h = dt / n, with n at least <see cref="ShapeMatchingParameters.Substeps"/> and enough
+    /// that ωh ≤ <see cref="ShapeMatchingParameters.MaxSubstepPhase"/>; each substep:
     /// <list type="number">
-    /// <item>predict: vᵢ += h·a, x*ᵢ = xᵢ + h·vᵢ;</item>
-    /// <item>solve: goals gᵢ of the predicted positions from the clusters (<see cref="ClusterGoals"/>),
-    /// Δᵢ = α_sub (gᵢ − x*ᵢ) (eq. 3), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h (see <c>PullTowardGoals</c>);</item>
+    /// <item>predict: the non-rigid velocity decays, vᵢ ← uᵢ + D (vᵢ − uᵢ) (<see cref="RigidMotionDamping"/>),
+    /// and the external acceleration is added, vᵢ += h·a;</item>
+    /// <item>solve: goals gᵢ of the positions xᵢ (<see cref="ClusterGoals"/>), Δᵢ = α (gᵢ − xᵢ) (eq. 3),
+    /// vᵢ += Δᵢ / h (see <c>PullTowardGoals</c>), then x*ᵢ = xᵢ + h·vᵢ;</item>
     /// <item>collide: x* pushed out of colliders with friction, the push added to v (Δv = Δx/h),
-    /// restitution on the normal velocity (<see cref="ContactProjection"/>);</item>
-    /// <item>update: xᵢ = x*ᵢ, then damping of the velocity that differs from the body's rigid motion (<see cref="RigidMotionDamping"/>).</item>
+    /// restitution on the normal velocity, pre-existing overlap left at most
+    /// <see cref="ShapeMatchingParameters.MaxDepenetrationSpeed"/> (<see cref="ContactProjection"/>);</item>
+    /// <item>update: xᵢ = x*ᵢ.</item>
     /// </list>
-    /// Because goals are reached by a fraction α ≤ 1 of the way, there is no overshoot and the step is
-    /// unconditionally stable (§3.3). After the substeps a guard checks every particle: a non-finite
-    /// value, a speed above <see cref="ShapeMatchingParameters.MaxSpeed"/> or a position beyond
-    /// <see cref="PositionLimit"/> resets the body to its rest shape at its last good placement and is
-    /// reported. A body whose particles stay slow (mass-weighted RMS speed) sleeps until a force change, a velocity written
-    /// from outside or an overlapping collider wakes it.
+    /// α and D come from the exact rule of <see cref="OscillatorDiscretization"/>: a deformation the goals
+    /// resist fully oscillates at exactly ω and decays at exactly ζω for any h, and the substep is stable at
+    /// any step size. After the substeps a guard checks every particle: a non-finite value, a speed above
+    /// <see cref="ShapeMatchingParameters.MaxSpeed"/> or a position beyond <see cref="PositionLimit"/>
+    /// resets the body to its rest shape at its last good placement (keeping its plastic rest shape) and is
+    /// reported. A body whose particles stay slow (mass-weighted RMS speed) sleeps until a force change, a
+    /// velocity written from outside or an overlapping collider wakes it.
+    /// Positions are simulated relative to <see cref="SoftBodyStatus.Origin"/>, which follows the body in
+    /// whole metres once it is more than <see cref="RebaseDistance"/> from it, so a body 10 km from the world
+    /// origin has the float32 resolution of one near it.
     /// The same function runs in the Burst jobs and in the .NET tests; it touches nothing but its arguments.
     /// </summary>
     public static class ShapeMatchingSolver
     {
-        /// <summary>Largest accepted distance of a particle from the world origin (m).</summary>
+        /// <summary>Largest accepted distance of a particle from the body's origin, and of the origin from the world origin (m).</summary>
         public const float PositionLimit = 1e6f;
 
-        /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/>, rotated and moving uniformly.</summary>
+        /// <summary>
+        /// Distance (m, per axis) the body's centre may move from <see cref="SoftBodyStatus.Origin"/> before the origin
+        /// moves to it. Within it float32 positions resolve 4 µm; bodies that stay within it of the world origin keep
+        /// the origin at zero, so their positions are world positions.
+        /// </summary>
+        public const float RebaseDistance = 64f;
+
+        /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/> (world), rotated and moving uniformly.</summary>
         public static void Initialize(in ShapeMatchingModel model, in ShapeMatchingState state, float3 position,
             quaternion rotation, float3 velocity, out SoftBodyStatus status)
         {
             status = new SoftBodyStatus { Center = position, Rotation = math.normalizesafe(rotation) };
-            PlaceRestShape(model, state, status.Center, status.Rotation, velocity);
+            status.Origin = OriginFor(position);
+            status.LocalCenter = position - status.Origin;
+            PlaceRestShape(model, state, status.LocalCenter, status.Rotation, velocity);
         }
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
@@ -40,6 +62,18 @@ namespace SoftBodyDynamics.Solvers
         {
             status.Asleep = false;
             status.StillTime = 0f;
+        }
+
+        /// <summary>
+        /// Substeps a step of <paramref name="dt"/> takes with <paramref name="parameters"/>: at least
+        /// <see cref="ShapeMatchingParameters.Substeps"/>, and enough that ω·h ≤ <see cref="ShapeMatchingParameters.MaxSubstepPhase"/>
+        /// (at most <see cref="ShapeMatchingParameters.MaxSubsteps"/>).
+        /// </summary>
+        public static int SubstepCount(in ShapeMatchingParameters parameters, float dt)
+        {
+            ShapeMatchingParameters p = parameters.Sanitized();
+            return OscillatorDiscretization.SubstepsFor(p.AngularFrequency, dt, p.Substeps, p.MaxSubstepPhase,
+                ShapeMatchingParameters.MaxSubsteps);
         }
 
         /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment for the algorithm.</summary>
@@ -51,56 +85,64 @@ namespace SoftBodyDynamics.Solvers
             if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
                 return report;
             ShapeMatchingParameters p = parameters.Sanitized();
+            float3 origin = status.Origin;
             if (status.Asleep)
             {
-                if (!ShouldWake(model, p, colliders, state, status))
+                if (!ShouldWake(model, p, colliders, origin, state, status))
                     return report;
                 Wake(ref status);
                 report.WokeUp = true;
             }
             // Bad input (written from outside since the last step) is caught before it spreads, with its index.
             int badInput = FindBadParticle(state.Positions, state.Velocities, p.MaxSpeed);
-            if (badInput >= 0)
+            if (badInput >= 0 || !(math.cmax(math.abs(origin)) <= PositionLimit))
             {
-                ResetToLastGoodPlacement(model, state, badInput, ref status, ref report);
+                ResetToLastGoodPlacement(model, state, math.max(badInput, 0), ref status, ref report);
                 return report;
             }
             report.Stepped = true;
             status.LastAcceleration = p.Acceleration;
 
-            int substeps = p.Substeps;
+            float omega = p.AngularFrequency;
+            int substeps = OscillatorDiscretization.SubstepsFor(omega, dt, p.Substeps, p.MaxSubstepPhase,
+                ShapeMatchingParameters.MaxSubsteps);
             float h = dt / substeps;
-            // α per substep so that (1 − α_sub)^substeps = 1 − α: the same stiffness for any substep count.
-            float alpha = p.Stiffness >= 1f ? 1f : 1f - math.pow(1f - p.Stiffness, 1f / substeps);
-            float damping = p.Damping > 0f ? 1f - math.exp(-p.Damping * h) : 0f;
+            OscillatorDiscretization.Coefficients k = OscillatorDiscretization.Compute(omega, p.DampingRatio, h);
+            report.Substeps = substeps;
+            float velocityLoss = 1f - k.VelocityRetention;
             // Resting contacts must not bounce: ignore approach speeds one substep of acceleration can produce.
             float bounceThreshold = 2f * math.length(p.Acceleration) * h;
+            var contact = new ContactProjection.Settings
+            {
+                Radius = p.ParticleRadius, Friction = p.Friction, Restitution = p.Restitution,
+                BounceThreshold = bounceThreshold, MaxDepenetration = p.MaxDepenetrationSpeed * h, Origin = origin,
+            };
             var x = state.Positions;
             var v = state.Velocities;
             var predicted = state.Predicted;
 
             for (int s = 0; s < substeps; s++)
             {
-                // Predict.
+                // Predict (velocities): the non-rigid velocity decays, v ← u + D (v − u); the external acceleration acts.
+                if (velocityLoss > 0f)
+                    RigidMotionDamping.Apply(x, v, model.Masses, velocityLoss, state.Goals);
                 for (int i = 0; i < x.Length; i++)
-                {
                     v[i] += h * p.Acceleration;
-                    predicted[i] = x[i] + h * v[i];
-                }
-                // Solve: goals of the predicted positions; plastic flow once per step, on its last substep.
-                var counters = ClusterGoals.Compute(model, p, state, predicted, s == substeps - 1 ? dt : 0f);
-                PullTowardGoals(model, state, alpha, h);
+                // Solve: goals of the positions xᵢ; plastic flow once per step, on its last substep.
+                var counters = ClusterGoals.Compute(model, p, state, x, s == substeps - 1 ? dt : 0f);
+                PullTowardGoals(model, state, k.Pull, h);
                 report.MaxRotationIterations = math.max(report.MaxRotationIterations, counters.MaxIterations);
                 report.PlasticUpdates += counters.PlasticUpdates;
                 report.Fallbacks = counters.Fallbacks;
+                report.PlasticityUnavailable |= counters.PlasticityUnavailable;
+                // Predict (positions): x* = x + h v.
+                for (int i = 0; i < x.Length; i++)
+                    predicted[i] = x[i] + h * v[i];
                 // Collide (positions and velocities), then update: xᵢ = x*ᵢ.
                 report.Contacts = colliders.Length > 0
-                    ? ContactProjection.Project(x, predicted, v, state.ContactNormals, colliders, p.ParticleRadius, p.Friction,
-                        h, p.Restitution, bounceThreshold)
+                    ? ContactProjection.Project(x, predicted, v, state.ContactNormals, colliders, contact, h)
                     : ClearContacts(state.ContactNormals);
                 predicted.CopyTo(x);
-                if (damping > 0f)
-                    RigidMotionDamping.Apply(x, v, model.Masses, damping, state.Goals);
             }
 
             int bad = FindBadParticle(x, v, p.MaxSpeed);
@@ -110,7 +152,7 @@ namespace SoftBodyDynamics.Solvers
                 return report;
             }
 
-            UpdatePlacement(model, x, ref status);
+            UpdatePlacement(model, state, ref status);
             if (p.SleepSpeed > 0f && MeanSquareSpeed(v, model.Masses) < p.SleepSpeed * p.SleepSpeed)
             {
                 status.StillTime += dt;
@@ -130,20 +172,20 @@ namespace SoftBodyDynamics.Solvers
             return report;
         }
 
+        /// <summary>The origin for a body whose centre is at <paramref name="center"/> (world): zero near the world origin, else the centre rounded to whole metres.</summary>
+        public static float3 OriginFor(float3 center) =>
+            math.cmax(math.abs(center)) > RebaseDistance && math.all(math.isfinite(center)) ? math.round(center) : float3.zero;
+
         /// <summary>
-        /// Eq. 3: Δᵢ = α (gᵢ − x*ᵢ), x*ᵢ += Δᵢ, vᵢ += Δᵢ/h. Velocities change only by these small
-        /// increments (never as a difference of two positions), so float32 round-off of momentum stays
-        /// at the level of the increments. Shape matching is an internal force, so the pull must change
-        /// neither momentum nor angular momentum; two projections make that hold exactly:
+        /// Eq. 3 as a velocity change: Δᵢ = α (gᵢ − xᵢ), vᵢ += Δᵢ / h, so the position the substep then
+        /// predicts, xᵢ + h vᵢ, has moved by Δᵢ toward the goal. Shape matching is an internal force, so the pull
+        /// must change neither momentum nor angular momentum; two projections make that hold to round-off:
         /// <list type="bullet">
         /// <item>Σ mᵢ Δᵢ = 0 in exact arithmetic, but the float32 rest offsets do not sum to exactly zero
         /// and that residual is the same every substep: the mass-weighted mean of Δ is removed.</item>
-        /// <item>The pull is torque-free about the predicted positions only for rigid goals and an exact
-        /// rotation, while angular momentum is carried by xᵢ × vᵢ at the substep's start, which the pull
-        /// changes by Σ mᵢ (xᵢ − x_cm) × Δᵢ / h (for a tumbling body −Σ mᵢ vᵢ × Δᵢ, O((hω)²) of the spin
-        /// per substep, plus the rotation's stopping tolerance over h). The rigid rotation δθ × (xᵢ − x_cm)
-        /// with I δθ = Σ mᵢ (xᵢ − x_cm) × Δᵢ is removed from Δ, positions and velocities alike, so the
-        /// pull carries no torque and no velocity is left that the positions do not follow.</item>
+        /// <item>The pull is torque-free about x_cm in exact arithmetic (Σ mᵢ gᵢ pᵢᵀ is symmetric for the
+        /// polar rotation and for A = A_pq A_qq⁻¹), but not to the rotation's stopping tolerance and float32
+        /// round-off. The rigid rotation δθ × (xᵢ − x_cm) with I δθ = Σ mᵢ (xᵢ − x_cm) × Δᵢ is removed.</item>
         /// </list>
         /// </summary>
         static void PullTowardGoals(in ShapeMatchingModel model, in ShapeMatchingState state, float alpha, float h)
@@ -151,18 +193,17 @@ namespace SoftBodyDynamics.Solvers
             var x = state.Positions;
             var v = state.Velocities;
             var delta = state.Goals;
-            var predicted = state.Predicted;
             float3 drift = float3.zero;
             float mass = 0f;
             for (int i = 0; i < x.Length; i++)
             {
                 if (!(model.InverseClusterCounts[i] > 0f))
                     continue;
-                delta[i] -= predicted[i];
+                delta[i] -= x[i];
                 drift += model.Masses[i] * delta[i];
                 mass += model.Masses[i];
             }
-            if (!(mass > 0f))
+            if (!(mass > 0f) || !(alpha > 0f))
                 return;
             drift /= mass;
             float3 xcm = ShapeMatching.CenterOfMass(x, model.Masses);
@@ -177,38 +218,65 @@ namespace SoftBodyDynamics.Solvers
                 spin = float3.zero;
             float invH = 1f / h;
             for (int i = 0; i < x.Length; i++)
-            {
-                float3 d = delta[i] - math.cross(spin, x[i] - xcm);
-                predicted[i] += d;
-                v[i] += d * invH;
-            }
+                v[i] += (delta[i] - math.cross(spin, x[i] - xcm)) * invH;
         }
 
-        /// <summary>The NaN guard's answer: rest shape at the last good centre and rotation, at rest, reported.</summary>
+        /// <summary>
+        /// The NaN guard's answer: rest shape at the last good centre and rotation, at rest, reported. Each
+        /// cluster keeps its plastic rest shape (Sₚ, A_qq⁻¹, quadratic inverse) when it is finite: the guard undoes
+        /// a broken state, not the body's history.
+        /// </summary>
         static void ResetToLastGoodPlacement(in ShapeMatchingModel model, in ShapeMatchingState state, int badParticle,
             ref SoftBodyStatus status, ref ShapeMatchingStepReport report)
         {
             report.Reset = true;
             report.BadParticle = badParticle;
             status.ResetCount++;
-            if (!math.all(math.isfinite(status.Center)) || !(math.lengthsq(status.Center) <= PositionLimit * PositionLimit)
+            if (!math.all(math.isfinite(status.Center)) || !(math.cmax(math.abs(status.Center)) <= PositionLimit)
                 || !Finite.All(status.Rotation.value))
             {
                 status.Center = float3.zero;
                 status.Rotation = quaternion.identity;
             }
             status.Rotation = math.normalizesafe(status.Rotation);
-            PlaceRestShape(model, state, status.Center, status.Rotation, float3.zero);
+            status.Origin = OriginFor(status.Center);
+            status.LocalCenter = status.Center - status.Origin;
+            PlaceParticles(model, state, status.LocalCenter, status.Rotation, float3.zero);
+            bool quadraticFinite = Finite.All(state.QuadraticInverse);
+            for (int c = 0; c < model.ClusterCount; c++)
+            {
+                ref ClusterState cluster = ref state.Clusters[c];
+                bool plasticFinite = Finite.All(cluster.PlasticDeformation) && Finite.All(cluster.Rest.AqqInverse)
+                                     && math.determinant(cluster.PlasticDeformation) > 0f;
+                if (plasticFinite)
+                    cluster.Rotation = status.Rotation;
+                else
+                    cluster = new ClusterState { Rotation = status.Rotation, PlasticDeformation = float3x3.identity, Rest = model.ClusterRest[c] };
+            }
+            if (!quadraticFinite && state.QuadraticInverse.Length == model.QuadraticInverse.Length)
+                model.QuadraticInverse.CopyTo(state.QuadraticInverse);
             status.StillTime = 0f;
             status.Asleep = false;
             status.StepCount++;
         }
 
         /// <summary>
-        /// Rest shape placed at a centre and rotation, uniform velocity; clusters back to rest (Sₚ = I,
+        /// Rest shape placed with its centre of mass at <paramref name="center"/> (relative to the body's
+        /// <see cref="SoftBodyStatus.Origin"/>) and rotation, uniform velocity; clusters back to rest (Sₚ = I,
         /// rotation = <paramref name="rotation"/>, the model's rest data and quadratic inverses).
         /// </summary>
         public static void PlaceRestShape(in ShapeMatchingModel model, in ShapeMatchingState state, float3 center,
+            quaternion rotation, float3 velocity)
+        {
+            PlaceParticles(model, state, center, rotation, velocity);
+            for (int c = 0; c < model.ClusterCount; c++)
+                state.Clusters[c] = new ClusterState
+                    { Rotation = rotation, PlasticDeformation = float3x3.identity, Rest = model.ClusterRest[c] };
+            if (state.QuadraticInverse.Length == model.QuadraticInverse.Length)
+                model.QuadraticInverse.CopyTo(state.QuadraticInverse);
+        }
+
+        static void PlaceParticles(in ShapeMatchingModel model, in ShapeMatchingState state, float3 center,
             quaternion rotation, float3 velocity)
         {
             float3x3 r = new float3x3(rotation);
@@ -217,20 +285,29 @@ namespace SoftBodyDynamics.Solvers
                 state.Positions[i] = center + math.mul(r, model.RestPositions[i] - model.BodyRest.RestCenter);
                 state.Velocities[i] = velocity;
             }
-            for (int c = 0; c < model.ClusterCount; c++)
-                state.Clusters[c] = new ClusterState
-                    { Rotation = rotation, PlasticDeformation = float3x3.identity, Rest = model.ClusterRest[c] };
-            if (state.QuadraticInverse.Length == model.QuadraticInverse.Length)
-                model.QuadraticInverse.CopyTo(state.QuadraticInverse);
         }
 
-        /// <summary>Centre of mass and best-fit rotation of the whole body (warm-started), the placement the guard resets to.</summary>
-        static void UpdatePlacement(in ShapeMatchingModel model, ReadOnlySpan<float3> x, ref SoftBodyStatus status)
+        /// <summary>
+        /// Centre of mass and best-fit rotation of the whole body (warm-started), the placement the guard resets to;
+        /// moves the origin (and the positions with it, by whole metres: exact in float32) once the centre is more than
+        /// <see cref="RebaseDistance"/> from it.
+        /// </summary>
+        static void UpdatePlacement(in ShapeMatchingModel model, in ShapeMatchingState state, ref SoftBodyStatus status)
         {
+            var x = state.Positions;
             float3 center = ShapeMatching.CenterOfMass(x, model.Masses);
             float3x3 apq = ShapeMatching.Apq(x, model.Masses, center, model.RestPositions, model.BodyRest.RestCenter);
             RotationExtraction.Extract(apq, ref status.Rotation);
-            status.Center = center;
+            if (math.cmax(math.abs(center)) > RebaseDistance)
+            {
+                float3 shift = math.round(center);
+                for (int i = 0; i < x.Length; i++)
+                    x[i] -= shift;
+                center -= shift;
+                status.Origin += shift;
+            }
+            status.LocalCenter = center;
+            status.Center = status.Origin + center;
         }
 
         /// <summary>First particle with a non-finite or absurd position or velocity, or −1.</summary>
@@ -261,7 +338,7 @@ namespace SoftBodyDynamics.Solvers
         }
 
         static bool ShouldWake(in ShapeMatchingModel model, in ShapeMatchingParameters p, ReadOnlySpan<ColliderShape> colliders,
-            in ShapeMatchingState state, in SoftBodyStatus status)
+            float3 origin, in ShapeMatchingState state, in SoftBodyStatus status)
         {
             if (math.any(p.Acceleration != status.LastAcceleration))
                 return true;
@@ -272,7 +349,7 @@ namespace SoftBodyDynamics.Solvers
                 if (math.any(state.Velocities[i] != float3.zero) || !math.all(math.isfinite(state.Positions[i])))
                     return true;
                 for (int c = 0; c < colliders.Length; c++)
-                    if (ParticleCollision.Penetration(colliders[c], state.Positions[i], p.ParticleRadius, out _, out float depth)
+                    if (ParticleCollision.Penetration(colliders[c].Translated(-origin), state.Positions[i], p.ParticleRadius, out _, out float depth)
                         && depth > tolerance)
                         return true;
             }

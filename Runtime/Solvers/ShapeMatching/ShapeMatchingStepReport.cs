@@ -21,5 +21,12 @@ namespace SoftBodyDynamics.Solvers
         public int Contacts;
         /// <summary>Clusters whose rest shape flowed plastically during the step.</summary>
         public int PlasticUpdates;
+        /// <summary>Substeps the step took (at least the requested count; more where the frequency needed them).</summary>
+        public int Substeps;
+        /// <summary>
+        /// Plasticity was asked for in quadratic mode, but the state has no per-instance quadratic inverses to
+        /// rewrite, so the rest shape did not flow (allocate <see cref="ShapeMatchingState.QuadraticInverse"/>).
+        /// </summary>
+        public bool PlasticityUnavailable;
     }
 }

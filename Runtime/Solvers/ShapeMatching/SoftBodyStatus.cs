@@ -7,6 +7,14 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Centre of mass at the end of the last good step (m, world).</summary>
         public float3 Center;
+        /// <summary>
+        /// World position (m) the particle positions are relative to: zero while the body stays within
+        /// <see cref="ShapeMatchingSolver.RebaseDistance"/> of the world origin, else whole metres near the body.
+        /// World position of particle i = Origin + xᵢ.
+        /// </summary>
+        public float3 Origin;
+        /// <summary>Centre of mass relative to <see cref="Origin"/> (m), at full float32 resolution.</summary>
+        public float3 LocalCenter;
         /// <summary>Best-fit rotation of the whole body from its rest pose at the end of the last good step.</summary>
         public quaternion Rotation;
         /// <summary>Seconds the fastest particle has stayed below the sleep speed.</summary>

@@ -16,14 +16,23 @@ namespace SoftBodyDynamics.Tests.Solvers
         static IEnumerable<TestCaseData> BadFields()
         {
             yield return Case("ModeOutOfEnum", (ref ShapeMatchingParameters p) => p.Mode = (ShapeMatchingMode)7, SoftBodyIssueCode.ModeInvalid);
-            yield return Case("StiffnessNaN", (ref ShapeMatchingParameters p) => p.Stiffness = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("StiffnessAboveOne", (ref ShapeMatchingParameters p) => p.Stiffness = 1.5f, SoftBodyIssueCode.StiffnessOutOfRange);
-            yield return Case("StiffnessNegative", (ref ShapeMatchingParameters p) => p.Stiffness = -0.1f, SoftBodyIssueCode.StiffnessOutOfRange);
-            yield return Case("StiffnessZero", (ref ShapeMatchingParameters p) => p.Stiffness = 0f, SoftBodyIssueCode.StiffnessZero, SoftBodyIssueSeverity.Warning);
+            yield return Case("FrequencyNaN", (ref ShapeMatchingParameters p) => p.Frequency = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("FrequencyAboveMax", (ref ShapeMatchingParameters p) => p.Frequency = 1500f, SoftBodyIssueCode.FrequencyOutOfRange);
+            yield return Case("FrequencyNegative", (ref ShapeMatchingParameters p) => p.Frequency = -0.1f, SoftBodyIssueCode.FrequencyOutOfRange);
+            yield return Case("FrequencyZero", (ref ShapeMatchingParameters p) => p.Frequency = 0f, SoftBodyIssueCode.FrequencyZero, SoftBodyIssueSeverity.Warning);
+            yield return Case("BetaOne", (ref ShapeMatchingParameters p) => p.Beta = 1f, SoftBodyIssueCode.BetaLimited, SoftBodyIssueSeverity.Warning);
+            yield return Case("MaxSubstepPhaseZero", (ref ShapeMatchingParameters p) => p.MaxSubstepPhase = 0f, SoftBodyIssueCode.MaxSubstepPhaseNotPositive);
+            yield return Case("MaxDepenetrationSpeedNegative", (ref ShapeMatchingParameters p) => p.MaxDepenetrationSpeed = -1f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
+            yield return Case("PlasticRigid", (ref ShapeMatchingParameters p) =>
+            {
+                p.Mode = ShapeMatchingMode.Rigid;
+                p.Plasticity = new PlasticityParameters { Yield = 0.05f, Creep = 10f, MaxDeformation = 0.5f };
+            }, SoftBodyIssueCode.PlasticityIgnoredInRigidMode, SoftBodyIssueSeverity.Warning);
             yield return Case("BetaAboveOne", (ref ShapeMatchingParameters p) => p.Beta = 1.01f, SoftBodyIssueCode.BetaOutOfRange);
             yield return Case("BetaNegative", (ref ShapeMatchingParameters p) => p.Beta = -0.01f, SoftBodyIssueCode.BetaOutOfRange);
             yield return Case("BetaInfinite", (ref ShapeMatchingParameters p) => p.Beta = float.PositiveInfinity, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("DampingNegative", (ref ShapeMatchingParameters p) => p.Damping = -1f, SoftBodyIssueCode.DampingNegative);
+            yield return Case("DampingRatioNegative", (ref ShapeMatchingParameters p) => p.DampingRatio = -1f, SoftBodyIssueCode.DampingRatioOutOfRange);
+            yield return Case("DampingRatioHuge", (ref ShapeMatchingParameters p) => p.DampingRatio = 1e4f, SoftBodyIssueCode.DampingRatioOutOfRange);
             yield return Case("AccelerationNaN", (ref ShapeMatchingParameters p) => p.Acceleration.y = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
             yield return Case("SubstepsZero", (ref ShapeMatchingParameters p) => p.Substeps = 0, SoftBodyIssueCode.SubstepsOutOfRange);
             yield return Case("SubstepsAbove64", (ref ShapeMatchingParameters p) => p.Substeps = 65, SoftBodyIssueCode.SubstepsOutOfRange);

@@ -104,7 +104,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 var model = LatticeBody.Create(new int3(4, 4, 4), 0.1f, 4, 1f);
                 var p = ShapeMatchingParameters.Default;
                 p.Mode = ShapeMatchingMode.Rigid;
-                p.Stiffness = 1f;
+                p.Frequency = 30f;
+                p.DampingRatio = 1f;
                 p.Friction = mu;
                 p.SleepSpeed = 0f;
                 quaternion tilt = quaternion.AxisAngle(new float3(0f, 0f, 1f), math.PI / 6f);

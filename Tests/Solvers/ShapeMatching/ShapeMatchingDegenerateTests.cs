@@ -43,8 +43,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = Build(kind, mode == ShapeMatchingMode.Quadratic);
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.Stiffness = 0.5f;
-            p.Damping = 0f;
+            p.Frequency = 16f;
+            p.DampingRatio = 0.2f;
             p.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, new float3(0f, 5f, 0f), quaternion.identity);
             var rng = new Random(7u + (uint)kind);

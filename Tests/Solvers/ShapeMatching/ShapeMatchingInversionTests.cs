@@ -23,7 +23,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = LatticeBody.Create(new int3(4, 4, 4), 0.1f, 4, 1f, mode == ShapeMatchingMode.Quadratic);
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.Stiffness = 0.5f;
+            p.Frequency = 16f;
+            p.DampingRatio = 0.2f;
             p.Acceleration = float3.zero;
             p.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity);

@@ -42,7 +42,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 extent = math.max(extent, math.cmax(math.abs(x)));
             float ulp = extent * 1.1920929e-7f; // ≥ the spacing of floats near the largest coordinate
             var p = body.Parameters;
-            float alphaSub = 1f - math.pow(1f - p.Stiffness, 1f / p.Substeps);
+            int substeps = ShapeMatchingSolver.SubstepCount(p, 1f / 60f);
+            float alphaSub = OscillatorDiscretization.Compute(p.AngularFrequency, p.DampingRatio, 1f / 60f / substeps).Pull;
             Assert.That(worst, Is.LessThanOrEqualTo(2f * ulp / alphaSub));
             Assert.That(body.Status.Asleep, Is.True, "a body at rest falls asleep");
             var frozen = (float3[])body.Positions.Clone();

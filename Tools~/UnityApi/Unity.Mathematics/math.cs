@@ -91,6 +91,8 @@ namespace Unity.Mathematics
         public static float3 lerp(float3 a, float3 b, float t) => a + t * (b - a);
         public static float3 sign(float3 x) => new float3(sign(x.x), sign(x.y), sign(x.z));
         public static float3 floor(float3 x) => new float3(floor(x.x), floor(x.y), floor(x.z));
+        // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.round.html#Unity_Mathematics_math_round_Unity_Mathematics_float3_
+        public static float3 round(float3 x) => new float3(round(x.x), round(x.y), round(x.z));
         public static float csum(float3 x) => x.x + x.y + x.z;
         public static float cmax(float3 x) => max(max(x.x, x.y), x.z);
         public static float cmin(float3 x) => min(min(x.x, x.y), x.z);
