@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # All the tests: NUnit solver tests (the same files Unity runs), conformance tests of the Unity.Mathematics
-# stand-in, package lint, type-check of the Unity side, shader check (+ its self-test) and a quick smoke run
-# of the main job.
+# stand-in, package lint, type-check of the Unity side, shader check (+ its self-test), a quick run of the
+# mesh write-back timing and a quick smoke run of the main job.
 # Ends with one line "N passed, N failed" and exits non-zero on any failure.
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -70,6 +70,9 @@ run_check typecheck bash "Tools~/TypeCheck/typecheck.sh"
 section "shader check"
 run_check shadercheck bash "Tools~/ShaderCheck/shader-check.sh"
 run_check shadercheck-selftest bash "Tools~/ShaderCheck/shader-check.sh" --self-test
+
+section "mesh write-back timing (quick)"
+run_check meshwriteback dotnet run -c Release --project "Tools~/DotNet/SoftBodyDynamics.MeshWriteBackTiming/SoftBodyDynamics.MeshWriteBackTiming.csproj" --no-restore -- --quick
 
 section "main job smoke run (quick)"
 smoke="$LOG_DIR/smoke"

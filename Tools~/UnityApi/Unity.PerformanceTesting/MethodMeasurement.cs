@@ -29,6 +29,10 @@ namespace Unity.PerformanceTesting.Measurements
         // ExecuteActionWithCleanupSetup in 3.1.0 and 3.5.0)
         public MethodMeasurement SetUp(Action action) => throw null;
 
+        // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_CleanUp_System_Action_
+        // (runs after every invocation, outside the timed region; same source)
+        public MethodMeasurement CleanUp(Action action) => throw null;
+
         // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_Run
         public void Run() => throw null;
     }
