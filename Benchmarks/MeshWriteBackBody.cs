@@ -94,6 +94,13 @@ namespace SoftBodyDynamics.Benchmarks
             return result;
         }
 
+        /// <summary>
+        /// Where body <paramref name="index"/> of a benchmark stands (m): a 10 × 10 × 10 grid with 2 m spacing above the
+        /// ground, within 20 m of the world origin, so bodies do not touch and their particle positions stay world
+        /// positions (the solver moves a body's origin only beyond 64 m).
+        /// </summary>
+        public static float3 Position(int index) => new float3(2f * (index % 10), 1f + 2f * (index / 100 % 10), 2f * (index / 10 % 10));
+
         static int Index(int ring, int segment) => ring * (Segments + 1) + segment;
 
         /// <summary>Adds (a, b, c), or (a, c, b) when that is the order whose normal points away from the centre.</summary>

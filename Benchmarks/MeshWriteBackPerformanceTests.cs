@@ -149,12 +149,12 @@ namespace SoftBodyDynamics.Benchmarks
                 .Run();
         }
 
-        /// <summary>A simulated body 2 m from the previous one, at the origin's height of 1 m.</summary>
+        /// <summary>A simulated body at <see cref="MeshWriteBackBody.Position"/>.</summary>
         Entity CreateBody(int index)
         {
             EntityManager manager = m_World.EntityManager;
             Entity body = manager.CreateEntity();
-            manager.AddComponentData(body, LocalTransform.FromPositionRotation(new float3(2f * index, 1f, 0f), quaternion.identity));
+            manager.AddComponentData(body, LocalTransform.FromPositionRotation(MeshWriteBackBody.Position(index), quaternion.identity));
             SoftBodyArchetype.AddComponents(manager, body, m_Shape, ShapeMatchingParameters.Default);
             manager.AddComponentData(body, new RenderBounds());
             m_Bodies.Add(body);

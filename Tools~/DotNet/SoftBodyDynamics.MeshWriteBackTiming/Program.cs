@@ -93,9 +93,9 @@ namespace SoftBodyDynamics.Tools.MeshWriteBackTiming
         }
 
         /// <summary>
-        /// <paramref name="count"/> bodies 2 m apart, each at a seeded random rotation and with every particle moved by
-        /// up to <see cref="k_Jitter"/>, so the normals are not the rest normals. Center and rotation are the placed
-        /// rest values (the deformation reads them, it does not fit them).
+        /// <paramref name="count"/> bodies at <see cref="MeshWriteBackBody.Position"/>, each at a seeded random rotation and
+        /// with every particle moved by up to <see cref="k_Jitter"/>, so the normals are not the rest normals. Center and
+        /// rotation are the placed rest values (the deformation reads them, it does not fit them).
         /// </summary>
         static Body[] Place(ShapeMatchingModelData model, int count, int vertexCount)
         {
@@ -108,7 +108,7 @@ namespace SoftBodyDynamics.Tools.MeshWriteBackTiming
             {
                 var particles = new float3[n];
                 var state = new ShapeMatchingState(particles, velocities, clusters, default, default, default, default);
-                ShapeMatchingSolver.Initialize(model.AsModel(), state, new float3(2f * b, 1f, 0f), rng.NextQuaternionRotation(),
+                ShapeMatchingSolver.Initialize(model.AsModel(), state, MeshWriteBackBody.Position(b), rng.NextQuaternionRotation(),
                     float3.zero, out SoftBodyStatus status);
                 for (int i = 0; i < n; i++)
                     particles[i] += rng.NextFloat3(new float3(-k_Jitter), new float3(k_Jitter));
