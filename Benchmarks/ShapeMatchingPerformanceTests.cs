@@ -13,7 +13,7 @@ namespace SoftBodyDynamics.Benchmarks
     /// squash-recovery step per measurement, then the scenario's error metrics recorded once each with
     /// <see cref="Measure.Custom(SampleGroup, double)"/>: volume error, shape error at 1 s and 2 s, momentum drifts,
     /// resets; all dimensionless). Each sample is the time of one step. This runs the managed build of the
-    /// solver; Burst-compiled timings belong to the job benchmarks.
+    /// solver; <see cref="ShapeMatchingBurstPerformanceTests"/> times the same step as a Burst job.
     /// </summary>
     public class ShapeMatchingPerformanceTests
     {
