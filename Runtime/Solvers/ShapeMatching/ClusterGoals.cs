@@ -144,16 +144,6 @@ namespace SoftBodyDynamics.Solvers
             r = new float3x3(cluster.Rotation);
             aLinear = cluster.Rest.LinearValid ? math.mul(p0, cluster.Rest.AqqInverse) * (length * length) : r;
             QuadraticShapeMatching.Transform(p0, p1, p2, inverseBlocks, out float3x3 t0, out float3x3 t1, out float3x3 t2);
-            // Volume: the goals must not follow a uniform dilation of the cluster. Its amplitude in the cluster's
-            // weighted inner product is δ = Σ wᵢ pᵢ·R qᵢ / Σ wᵢ |qᵢ|² − 1 = tr(Rᵀ p0) / M − 1 (Σ wᵢ|qᵢ|² = M L²), and
-            // δ·R qᵢ is removed from the β part. That removal is the orthogonal projection onto the dilation field,
-            // so the pull stays the gradient of an energy (energy-stable without damping); normalising Ã₀ by ∛det
-            // instead, as the linear mode does, is not symmetric here (Ã_qq couples the linear and quadratic blocks)
-            // and makes undamped small clusters grow.
-            float dilation = cluster.Rest.TotalMass > 0f
-                ? (math.dot(r.c0, p0.c0) + math.dot(r.c1, p0.c1) + math.dot(r.c2, p0.c2)) / cluster.Rest.TotalMass - 1f
-                : 0f;
-            float3x3 s0 = math.isfinite(dilation) ? t0 - (1f + dilation) * r : float3x3.zero;
             // A flat, collapsed or inverted linear block (det Ã₀ at or below the linear mode's floor) must not be
             // followed: the β part fades out toward the floor and the goals become rigid, as in the linear mode.
             const float floor = VolumePreservation.DefaultRelativeDeterminantFloor;
@@ -161,17 +151,36 @@ namespace SoftBodyDynamics.Solvers
             float fade = VolumePreservation.BetaFade(relativeDeterminant);
             if (fade < 1f)
                 counters.Fallbacks++;
-            // β blend of the 3×9 strain [Ã₀ − (1 + δ)R, Ã₁, Ã₂], limited like the linear mode's.
+            // β blend of the 3×9 strain [Ã₀ − R, Ã₁, Ã₂], limited like the linear mode's.
+            float3x3 s0 = t0 - r;
             float strain = math.sqrt(SquaredNorm(s0) + SquaredNorm(t1) + SquaredNorm(t2));
             float beta = fade * math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
             float3x3 g0 = r + beta * s0, g1 = beta * t1, g2 = beta * t2;
+            // Volume: the β part follows a change of volume too, so the goals add the gradient of a volume energy,
+            // E = ½ ω² κ M L² (J − 1)² with J = det A, A = A_pq A_qq⁻¹ of the linear fit: ∂J/∂xᵢ = wᵢ cof(A) A_qq⁻¹ qᵢ, so the
+            // goal of particle i moves by −κ (J − 1) cof(A) (M L² A_qq⁻¹) qᵢ. With κ = β/9 a small uniform dilation of an
+            // isotropic cluster (M L² A_qq⁻¹ = 3·I) is resisted at the full ω², as in the linear mode, and J is exact at
+            // any strain. An energy's gradient keeps the pull conservative, so an undamped body gains no energy (the
+            // linear mode's A / ∛det A applied to the 9-D fit's coupled linear block does not, and makes undamped
+            // small clusters grow).
+            float3x3 volumePull = float3x3.zero;
+            if (cluster.Rest.LinearValid && relativeDeterminant > floor)
+            {
+                float j = math.determinant(aLinear);
+                float3x3 cofactor = j * math.transpose(math.inverse(aLinear));
+                float kappa = fade * math.saturate(p.Beta) / 9f;
+                volumePull = (-kappa * (j - 1f) * cluster.Rest.TotalMass * length * length)
+                             * math.mul(cofactor, cluster.Rest.AqqInverse);
+                if (!Finite.All(volumePull))
+                    volumePull = float3x3.zero;
+            }
             var goals = state.Goals;
             for (int k = start; k < end; k++)
             {
                 int i = model.ClusterParticles[k];
                 float3 q = RestOffset(model.RestPositions[i], cluster.Rest.RestCenter, sp, usePlastic);
                 QuadraticShapeMatching.Lift(q * invL, cluster.Rest, out float3 a, out float3 b, out float3 cr);
-                float3 g = center + length * (math.mul(g0, a) + math.mul(g1, b) + math.mul(g2, cr));
+                float3 g = center + length * (math.mul(g0, a) + math.mul(g1, b) + math.mul(g2, cr)) + math.mul(volumePull, q);
                 goals[i] += model.InverseClusterCounts[i] * g;
             }
         }
