@@ -54,3 +54,37 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         string ErrorMetricForPlot { get; }
     }
 }
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>One row of a finished suite, as a summary sees it.</summary>
+    public readonly struct ScenarioOutcome
+    {
+        public readonly string Method;
+        public readonly double NsPerItem;
+        public readonly IReadOnlyList<Metric> Metrics;
+
+        public ScenarioOutcome(string method, double nsPerItem, IReadOnlyList<Metric> metrics)
+        {
+            Method = method;
+            NsPerItem = nsPerItem;
+            Metrics = metrics;
+        }
+
+        /// <summary>The named metric, or NaN when the row does not report it.</summary>
+        public double Value(string name)
+        {
+            foreach (Metric m in Metrics)
+                if (m.Name == name)
+                    return m.Value;
+            return double.NaN;
+        }
+    }
+
+    /// <summary>A suite that also writes a summary (Markdown) of all its rows, printed and added to the report after its table.</summary>
+    public interface IScenarioSuiteSummary
+    {
+        /// <summary>Markdown: tables and sentences; the rows are in the order the suite yielded them.</summary>
+        string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick);
+    }
+}

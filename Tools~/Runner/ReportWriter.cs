@@ -43,13 +43,16 @@ namespace SoftBodyDynamics.Runner
                 foreach (ScenarioResult r in s.Rows)
                 {
                     md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {Format.Rate(r.ItemsPerSecond)} |");
-                    foreach (string n in metricNames) md.Append($" {Format.Value(r.MetricValue(n))} |");
+                    // A metric the row does not report (NaN) is an empty cell, not "NaN".
+                    foreach (string n in metricNames) md.Append(double.IsNaN(r.MetricValue(n)) ? " – |" : $" {Format.Value(r.MetricValue(n))} |");
                     md.AppendLine();
                     foreach (var m in r.Metrics)
                         csv.AppendLine(string.Join(",", s.Suite.Name, r.Name, Quote(r.Method), r.Size, r.SizeUnit,
                             F(r.MedianMs), F(r.MinMs), F(r.MaxMs), F(r.NsPerItem), F(r.ItemsPerSecond), Quote(m.Name), F(m.Value)));
                 }
                 md.AppendLine();
+                if (!string.IsNullOrEmpty(s.Summary))
+                    md.AppendLine(s.Summary.TrimEnd()).AppendLine();
                 foreach (ScenarioResult r in s.Rows.Where(r => r.AllocatedBytesPerStep > 0))
                     md.AppendLine($"- **Warning:** `{r.Method}` (N = {r.Size}) allocated {r.AllocatedBytesPerStep:F0} bytes per Step.");
                 if (s.Rows.Any(r => r.AllocatedBytesPerStep > 0))
