@@ -48,6 +48,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Deform(Start, model.Masses, spacing, seed);
         }
 
+        /// <summary>The same start with other parameters (e.g. a deliberately wrong frequency); gravity removed, sleeping off.</summary>
+        public ConvergenceRelease(ShapeMatchingModelData model, ShapeMatchingParameters parameters, float3[] start)
+        {
+            Model = model;
+            parameters.Acceleration = float3.zero;
+            parameters.SleepSpeed = 0f;
+            Parameters = parameters;
+            Size = BodyMeasures.RestSize(model.AsModel());
+            Start = (float3[])start.Clone();
+        }
+
         /// <summary>Squash, twist and jitter about the centre of mass (seeded).</summary>
         public static void Deform(float3[] x, float[] masses, float spacing, uint seed)
         {

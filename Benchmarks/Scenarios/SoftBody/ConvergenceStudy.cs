@@ -26,7 +26,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public readonly ShapeMatchingClusterLayout Layout;
         public readonly ConvergenceRelease Release;
         readonly int m_ReferenceSteps;
-        Vector3d[][] m_Reference;
+        Vector3d[][] m_Reference, m_CoarseReference;
         double m_ReferenceChange = double.NaN;
         readonly Dictionary<int, double> m_Errors = new Dictionary<int, double>();
         readonly Dictionary<int, int> m_Resets = new Dictionary<int, int>();
@@ -64,11 +64,21 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             {
                 if (m_Reference == null)
                 {
-                    Vector3d[][] coarse = Release.ReferenceTrajectory(m_ReferenceSteps);
+                    m_CoarseReference = Release.ReferenceTrajectory(m_ReferenceSteps);
                     m_Reference = Release.ReferenceTrajectory(2 * m_ReferenceSteps);
-                    m_ReferenceChange = Release.Error(coarse, m_Reference);
+                    m_ReferenceChange = Release.Error(m_CoarseReference, m_Reference);
                 }
                 return m_Reference;
+            }
+        }
+
+        /// <summary>The reference at half the RK4 steps (<see cref="ReferenceStepsPerFrame"/> per frame), for Richardson checks.</summary>
+        public Vector3d[][] CoarseReference
+        {
+            get
+            {
+                _ = Reference;
+                return m_CoarseReference;
             }
         }
 

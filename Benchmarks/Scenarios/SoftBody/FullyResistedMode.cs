@@ -47,6 +47,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             // CᵀC over every cluster and monomial; its null space holds the admissible patterns.
             var ctc = new double[count, count];
             var row = new double[count];
+            var rows = new List<double[]>();
             int monomials = mode == ShapeMatchingMode.Quadratic ? 10 : mode == ShapeMatchingMode.Linear ? 4 : 3;
             for (int c = 0; c < model.ClusterCount; c++)
             {
@@ -74,6 +75,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     for (int a = 0; a < count; a++)
                     for (int b = 0; b < count; b++)
                         ctc[a, b] += row[a] * row[b];
+                    rows.Add((double[])row.Clone());
                 }
             }
             SymmetricEigen(ctc, out double[] values, out double[,] vectors);
@@ -115,10 +117,62 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (!(max > 1e-6))
                     return null;
             }
+            // The eigenvectors of CᵀC are null vectors only to √ε; project the constraints' row space out (twice, modified
+            // Gram–Schmidt) so every constraint holds to float64 round-off.
+            List<double[]> basis = OrthonormalBasis(rows);
+            for (int pass = 0; pass < 2; pass++)
+                foreach (double[] b in basis)
+                {
+                    double dot = 0;
+                    for (int j = 0; j < count; j++)
+                        dot += b[j] * pattern[j];
+                    for (int j = 0; j < count; j++)
+                        pattern[j] -= dot * b[j];
+                }
+            max = MaxAbs(pattern);
+            if (!(max > 1e-6))
+                return null;
             var s = new double[model.ParticleCount];
             for (int i = 0; i < s.Length; i++)
                 s[i] = pattern[plane[i]] / max;
             return s;
+        }
+
+        /// <summary>An orthonormal basis of the span of <paramref name="rows"/> (modified Gram–Schmidt, applied twice per row).</summary>
+        static List<double[]> OrthonormalBasis(List<double[]> rows)
+        {
+            var basis = new List<double[]>();
+            double largest = 0;
+            foreach (double[] r in rows)
+            {
+                double n = 0;
+                foreach (double v in r)
+                    n += v * v;
+                largest = Math.Max(largest, Math.Sqrt(n));
+            }
+            foreach (double[] r in rows)
+            {
+                var v = (double[])r.Clone();
+                for (int pass = 0; pass < 2; pass++)
+                    foreach (double[] b in basis)
+                    {
+                        double dot = 0;
+                        for (int j = 0; j < v.Length; j++)
+                            dot += b[j] * v[j];
+                        for (int j = 0; j < v.Length; j++)
+                            v[j] -= dot * b[j];
+                    }
+                double norm = 0;
+                foreach (double x in v)
+                    norm += x * x;
+                norm = Math.Sqrt(norm);
+                if (!(norm > 1e-9 * largest))
+                    continue;
+                for (int j = 0; j < v.Length; j++)
+                    v[j] /= norm;
+                basis.Add(v);
+            }
+            return basis;
         }
 
         static double MaxAbs(double[] values)
