@@ -88,3 +88,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick);
     }
 }
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// A suite that says how its accuracy-versus-cost figure is drawn: which rows form a series (joined by a line in
+    /// cost order), what labels the first and last point of a series, and what the cost axis is.
+    /// </summary>
+    public interface IScenarioSuiteFigure
+    {
+        /// <summary>The series a row belongs to (its legend entry).</summary>
+        string Series(ScenarioOutcome row);
+        /// <summary>The label of a row's point (drawn at the two ends of each series); rows of a series with the same label are one point.</summary>
+        string PointLabel(ScenarioOutcome row);
+        /// <summary>Title of the cost axis.</summary>
+        string CostLabel { get; }
+        /// <summary>A row's cost (the x value).</summary>
+        double Cost(ScenarioOutcome row);
+    }
+}

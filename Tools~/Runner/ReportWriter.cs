@@ -6,6 +6,7 @@ using System.IO;
 using System.Linq;
 using System.Runtime.InteropServices;
 using System.Text;
+using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
@@ -89,30 +90,45 @@ namespace SoftBodyDynamics.Runner
             var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
-            // One series per method family (the text before the first comma), labelled by the rest.
-            var families = rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
+            var figure = s.Suite as IScenarioSuiteFigure;
+            ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics);
+            // One series per method family (the text before the first comma, or the suite's own series), labelled by the rest.
+            var families = figure != null
+                ? rows.GroupBy(r => figure.Series(Outcome(r))).ToList()
+                : rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
+            double Cost(ScenarioResult r) => figure != null ? figure.Cost(Outcome(r)) : r.NsPerItem;
             var dat = new StringBuilder();
             var plots = new List<string>();
             int index = 0;
             foreach (var f in families)
             {
-                foreach (var r in f.OrderBy(r => r.NsPerItem))
+                // A suite with its own figure plots one point per label in a series (rows that ran the same setting, such
+                // as requested substep counts below what the step needs, would repeat it); the first row in suite order stays.
+                var ordered = (figure != null
+                    ? f.GroupBy(r => figure.PointLabel(Outcome(r))).Select(g => g.First())
+                    : f).OrderBy(Cost).ToList();
+                for (int k = 0; k < ordered.Count; k++)
                 {
-                    string rest = r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() : "";
-                    dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest} N={r.Size}\"");
+                    ScenarioResult r = ordered[k];
+                    string rest = figure != null
+                        ? (k == 0 || k == ordered.Count - 1 ? figure.PointLabel(Outcome(r)) : "")
+                        : r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() + $" N={r.Size}" : $"N={r.Size}";
+                    dat.AppendLine($"{F(Cost(r))} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest.Replace("\"", "")}\"");
                 }
                 dat.AppendLine().AppendLine();
                 // Explicit line type per family: the label plots would otherwise use up the colour cycle.
                 string style = $"lt {index + 1} pt {k_PointTypes[index % k_PointTypes.Length]}";
-                plots.Add($"'{name}.dat' index {index} using 1:2 with points {style} ps 1.3 title '{f.Key.Replace("'", "")}'");
+                string with = figure != null ? "linespoints" : "points";
+                plots.Add($"'{name}.dat' index {index} using 1:2 with {with} {style} ps 1.3 title '{f.Key.Replace("'", "")}'");
                 plots.Add($"'{name}.dat' index {index} using 1:2:3 with labels offset 0.8,0.5 left rotate by 20 font ',7' tc lt {index + 1} notitle");
                 index++;
             }
+            string costLabel = figure != null ? figure.CostLabel : $"ns per item, median ({rows[0].SizeUnit})";
             File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
             string gp = $@"set terminal pngcairo size 960,600 font ',10'
 set output '{name}.png'
 set title '{s.Suite.Name}: accuracy against cost'
-set xlabel 'ns per item, median ({rows[0].SizeUnit})'
+set xlabel '{costLabel.Replace("'", "")}'
 set ylabel '{metric}'
 set logscale xy
 set format y '%.0e'

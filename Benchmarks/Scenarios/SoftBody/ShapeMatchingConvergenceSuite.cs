@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// same continuous model, with the observed order of convergence, and the fitted frequency and damping ratio of a
     /// fully resisted mode against the parameters, for every mode, layout and substep count.
     /// </summary>
-    public sealed class ShapeMatchingConvergenceSuite : IScenarioSuite, IScenarioSuiteSummary
+    public sealed class ShapeMatchingConvergenceSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
     {
         /// <summary>Metric: RMS over particles and frames of |x_solver − x_ref| over the body size (dimensionless).</summary>
         public const string TrajectoryError = "traj err";
@@ -78,6 +78,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             "(a particle through a whole step, all substeps included), so ns/item grows with the substep count.";
 
         public string ErrorMetricForPlot => TrajectoryError;
+
+        public string Series(ScenarioOutcome row) => row.Method.Split(',')[0].Trim();
+        public string PointLabel(ScenarioOutcome row)
+        {
+            string label = row.Method.Substring(row.Method.IndexOf(',') + 1).Trim();
+            return label == "1 substeps" ? "1 substep" : label;
+        }
+        public string CostLabel => "ns per particle-step (one particle through a 1/60 s step, all substeps), median";
+        public double Cost(ScenarioOutcome row) => row.NsPerItem;
 
         public IEnumerable<IScenario> Scenarios(bool quick)
         {

@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// 1–32 requested substeps (default substep phase limit): resting height, sag and volume against the preset's
     /// dt → 0 rest, and frequency and damping ratio of a free oscillation against the preset's.
     /// </summary>
-    public sealed class ShapeMatchingFrameRateSuite : IScenarioSuite, IScenarioSuiteSummary
+    public sealed class ShapeMatchingFrameRateSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
     {
         public const string Substeps = "substeps";
         public const string Phase = "wh";
@@ -63,6 +63,19 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             "'plastic' counts plastic updates of the rest run (Clay yields under its own weight).";
 
         public string ErrorMetricForPlot => SagError;
+
+        /// <summary>"Jelly, 30 Hz": one line per preset and frame rate, through the requested substep counts.</summary>
+        public string Series(ScenarioOutcome row) => row.Method.Substring(0, row.Method.LastIndexOf(','));
+        public string PointLabel(ScenarioOutcome row) => row.Value(Substeps) == 1 ? "1 substep" : $"{row.Value(Substeps):0} substeps";
+        public string CostLabel => "µs per particle per simulated second, median (steps of 1/rate)";
+        /// <summary>ns per particle-step × steps per second: comparable across frame rates.</summary>
+        public double Cost(ScenarioOutcome row) => row.NsPerItem * RateOf(row) * 1e-3;
+
+        static double RateOf(ScenarioOutcome row)
+        {
+            string[] parts = row.Method.Split(',');
+            return double.Parse(parts[1].Trim().Split(' ')[0], CultureInfo.InvariantCulture);
+        }
 
         public IEnumerable<IScenario> Scenarios(bool quick)
         {
