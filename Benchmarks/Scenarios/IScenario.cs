@@ -53,10 +53,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure; null for a suite without an error reference (no such figure).</summary>
         string ErrorMetricForPlot { get; }
     }
-}
 
-namespace SoftBodyDynamics.Benchmarks.Scenarios
-{
     /// <summary>One row of a finished suite, as a summary sees it.</summary>
     public readonly struct ScenarioOutcome
     {
@@ -87,10 +84,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Markdown: tables and sentences; the rows are in the order the suite yielded them.</summary>
         string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick);
     }
-}
 
-namespace SoftBodyDynamics.Benchmarks.Scenarios
-{
     /// <summary>
     /// A suite that says how its accuracy-versus-cost figure is drawn: which rows form a series (joined by a line in
     /// cost order), what labels the first and last point of a series, and what the cost axis is.

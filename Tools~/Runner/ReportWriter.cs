@@ -62,9 +62,10 @@ namespace SoftBodyDynamics.Runner
                 if (gnuplot)
                 {
                     string pareto = PlotAccuracyVersusCost(dir, s);
+                    string cost = s.Suite is IScenarioSuiteFigure figure ? figure.CostLabel : "ns per item";
                     if (pareto != null)
-                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against ns per item]({pareto})").AppendLine()
-                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against time per item (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
+                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against {cost}]({pareto})").AppendLine()
+                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against {cost} (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
                     string scaling = PlotScaling(dir, s);
                     if (scaling != null)
                         md.AppendLine($"![{s.Suite.Name}: time per item against size]({scaling})").AppendLine()

@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// every frame are compared with the float64 RK4 trajectory of the same continuous model from the same float32
     /// start (<see cref="ShapeMatchingContinuousReference"/>); the error is
     /// <code>  e = √( Σ_frames Σᵢ |x_solver − x_ref|² / (frames · N) ) / size</code>
-    /// with size the largest rest extent. The deformation keeps every goal strain below the limit of 1 (about 0.35 at
+    /// with size the largest rest extent. The deformation keeps every goal strain below the limit of 1 (about 0.3 at
     /// the start), so the model is smooth and RK4 converges at its full order.
     /// </summary>
     public sealed class ConvergenceRelease
