@@ -11,7 +11,8 @@ namespace SoftBodyDynamics.Benchmarks
     /// (<see cref="RotationExtractionScenario"/>: seeded clusters from every hard-case family), warm-started from
     /// the previous step's rotation and cold-started from identity. One measurement is one scenario step, so
     /// each sample is the time of <see cref="k_MatrixCount"/> extractions.
-    /// This runs the managed build of the solver; Burst-compiled timings belong to the job benchmarks.
+    /// This runs the managed build of the solver; the step that calls it is timed as a Burst job in
+    /// <see cref="ShapeMatchingBurstPerformanceTests"/>.
     /// </summary>
     public class RotationExtractionPerformanceTests
     {

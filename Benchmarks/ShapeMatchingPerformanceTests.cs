@@ -13,8 +13,9 @@ namespace SoftBodyDynamics.Benchmarks
     /// released 216-particle body per measurement, then the scenario's metrics recorded once each with
     /// <see cref="Measure.Custom(SampleGroup, double)"/>: trajectory error against the float64 reference, observed order,
     /// the reference's change at half its step, frequency and damping-ratio errors, resets) and
-    /// <see cref="ShapeMatchingConservationScenario"/> (momentum and angular-momentum drift of the spinning blob). Each sample is the time of one step. This runs the managed build of the
-    /// solver; Burst-compiled timings belong to the job benchmarks.
+    /// <see cref="ShapeMatchingConservationScenario"/> (momentum and angular-momentum drift of the spinning blob). Each
+    /// sample is the time of one step. This runs the managed build of the solver;
+    /// <see cref="ShapeMatchingBurstPerformanceTests"/> times the same step as a Burst job.
     /// </summary>
     public class ShapeMatchingPerformanceTests
     {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# All the tests: NUnit solver tests (the same files Unity runs), package lint, type-check of the
-# Unity side, shader check (+ its self-test) and a quick smoke run of the main job.
+# All the tests: NUnit solver tests (the same files Unity runs), conformance tests of the Unity.Mathematics
+# stand-in, package lint, type-check of the Unity side, shader check (+ its self-test), a quick run of the
+# mesh write-back timing and a quick smoke run of the main job.
 # Ends with one line "N passed, N failed" and exits non-zero on any failure.
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -34,21 +35,31 @@ if ! bash "Tools~/setup.sh"; then
   echo; echo "$PASSED passed, $FAILED failed"; exit 1
 fi
 
+# Runs one NUnit project and counts its summary line; a skipped test is not a passing test.
+run_nunit() {
+  local name="$1" project="$2"
+  local log="$LOG_DIR/$name.log"
+  dotnet test "$project" -c Release --no-restore -nologo >"$log" 2>&1
+  local rc=$?
+  grep -E "^\s+(Failed|Skipped) |Error Message|^\s+Expected|^\s+But was|error CS|Passed!|Failed!" -A1 "$log" | grep -v "^--$" | head -n 200
+  local summary
+  summary="$(grep -E "(Passed|Failed)! +- +Failed: +[0-9]+, +Passed: +[0-9]+, +Skipped: +[0-9]+" "$log" | tail -n 1)"
+  if [ -z "$summary" ]; then
+    tail -n 40 "$log"; add 0 1 "$name (no summary, exit $rc)"
+  else
+    local nf np ns
+    nf="$(echo "$summary" | sed -E 's/.*Failed: +([0-9]+).*/\1/')"
+    np="$(echo "$summary" | sed -E 's/.*Passed: +([0-9]+).*/\1/')"
+    ns="$(echo "$summary" | sed -E 's/.*Skipped: +([0-9]+).*/\1/')"
+    add "$np" "$((nf + ns))" "$name"
+  fi
+}
+
 section "NUnit: Tests/Solvers"
-log="$LOG_DIR/nunit.log"
-dotnet test "Tools~/DotNet/SoftBodyDynamics.Tests.Solvers/SoftBodyDynamics.Tests.Solvers.csproj" -c Release --no-restore -nologo >"$log" 2>&1
-rc=$?
-grep -E "^\s+(Failed|Skipped) |Error Message|^\s+Expected|^\s+But was|error CS|Passed!|Failed!" -A1 "$log" | grep -v "^--$" | head -n 200
-summary="$(grep -E "(Passed|Failed)! +- +Failed: +[0-9]+, +Passed: +[0-9]+, +Skipped: +[0-9]+" "$log" | tail -n 1)"
-if [ -z "$summary" ]; then
-  tail -n 40 "$log"; add 0 1 "nunit (no summary, exit $rc)"
-else
-  nf="$(echo "$summary" | sed -E 's/.*Failed: +([0-9]+).*/\1/')"
-  np="$(echo "$summary" | sed -E 's/.*Passed: +([0-9]+).*/\1/')"
-  ns="$(echo "$summary" | sed -E 's/.*Skipped: +([0-9]+).*/\1/')"
-  # A skipped test is not a passing test.
-  add "$np" "$((nf + ns))" "nunit"
-fi
+run_nunit nunit "Tools~/DotNet/SoftBodyDynamics.Tests.Solvers/SoftBodyDynamics.Tests.Solvers.csproj"
+
+section "NUnit: Unity.Mathematics stand-in conformance"
+run_nunit mathematics-stand-in "Tools~/DotNet/SoftBodyDynamics.Tests.MathematicsStandIn/SoftBodyDynamics.Tests.MathematicsStandIn.csproj"
 
 section "package lint"
 run_check lint dotnet run --project "Tools~/PackageLint/PackageLint.csproj" -c Release -- "$ROOT"
@@ -59,6 +70,9 @@ run_check typecheck bash "Tools~/TypeCheck/typecheck.sh"
 section "shader check"
 run_check shadercheck bash "Tools~/ShaderCheck/shader-check.sh"
 run_check shadercheck-selftest bash "Tools~/ShaderCheck/shader-check.sh" --self-test
+
+section "mesh write-back timing (quick)"
+run_check meshwriteback dotnet run -c Release --project "Tools~/DotNet/SoftBodyDynamics.MeshWriteBackTiming/SoftBodyDynamics.MeshWriteBackTiming.csproj" --no-restore -- --quick
 
 section "main job smoke run (quick)"
 smoke="$LOG_DIR/smoke"

@@ -12,8 +12,13 @@ namespace SoftBodyDynamics
     /// (<see cref="SoftBodyMeshInstancing"/>), registered with <c>EntitiesGraphicsSystem.RegisterMesh</c> and
     /// set as the entity's runtime mesh; <see cref="SoftBodyMeshInstance"/> and a
     /// <see cref="SoftBodyMeshVertex"/> buffer are added. When the body is destroyed the mesh is unregistered
-    /// and destroyed. Does nothing in worlds without Entities Graphics. Main thread (managed meshes);
-    /// structural changes only when bodies appear or disappear.
+    /// and destroyed. Main thread (managed meshes); structural changes only when bodies appear or disappear.
+    /// <para>
+    /// Without a renderer it does nothing: when the world has no <c>EntitiesGraphicsSystem</c> (server or custom
+    /// worlds) or has one that cannot take meshes (no render pipeline asset, no compute support, <c>-nographics</c>,
+    /// <c>HYBRID_RENDERER_DISABLED</c>: Entities Graphics then disables itself in <c>OnCreate</c> and never creates
+    /// its BatchRendererGroup), bodies keep simulating, are drawn by nothing, and one warning per world says why.
+    /// </para>
     /// </summary>
     [UpdateInGroup(typeof(StructuralChangePresentationSystemGroup))]
     public partial struct SoftBodyRenderMeshSystem : ISystem
@@ -21,6 +26,7 @@ namespace SoftBodyDynamics
         EntityQuery m_NeedInstance;
         EntityQuery m_Orphaned;
         EntityQuery m_AllInstances;
+        bool m_WarnedNoRenderer;
 
         public void OnCreate(ref SystemState state)
         {
@@ -40,9 +46,25 @@ namespace SoftBodyDynamics
             EntityManager entityManager = state.EntityManager;
             var graphics = state.World.GetExistingSystemManaged<EntitiesGraphicsSystem>();
             ReleaseOrphans(entityManager, graphics);
-            if (graphics != null)
+            if (CanRegisterMeshes(graphics))
                 CreateInstances(entityManager, graphics);
+            else if (!m_WarnedNoRenderer && !m_NeedInstance.IsEmpty)
+            {
+                m_WarnedNoRenderer = true;
+                Debug.LogWarning($"Soft bodies in world '{state.World.Name}' are simulated but not drawn: Entities Graphics " +
+                    "has no renderer here (no render pipeline asset, no compute shader support, -nographics or a server " +
+                    "build, or no enabled EntitiesGraphicsSystem in this world). This warning is shown once per world.");
+            }
         }
+
+        /// <summary>
+        /// Whether <paramref name="graphics"/> can register meshes: the system exists, Entities Graphics is supported
+        /// (<c>EntitiesGraphicsSystem.EntitiesGraphicsEnabled</c>) and the system is enabled. A system created while
+        /// Entities Graphics was unsupported disables itself and has no BatchRendererGroup, so its
+        /// <c>RegisterMesh</c> would throw.
+        /// </summary>
+        internal static bool CanRegisterMeshes(EntitiesGraphicsSystem graphics) =>
+            graphics != null && graphics.Enabled && EntitiesGraphicsSystem.EntitiesGraphicsEnabled;
 
         public void OnDestroy(ref SystemState state)
         {
@@ -61,6 +83,7 @@ namespace SoftBodyDynamics
             foreach (Entity entity in orphans)
             {
                 SoftBodyMeshInstance instance = entityManager.GetComponentData<SoftBodyMeshInstance>(entity);
+                // A registered id means the system had its BatchRendererGroup; it keeps it until it is destroyed.
                 if (graphics != null && !instance.MeshId.Equals(BatchMeshID.Null))
                     graphics.UnregisterMesh(instance.MeshId);
                 SoftBodyMeshInstancing.Destroy(instance.Mesh.Value);

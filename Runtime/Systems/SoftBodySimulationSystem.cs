@@ -10,7 +10,9 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// Steps every initialized soft body once per fixed step with <see cref="ShapeMatchingSolver.Step"/>, the
-    /// same function the .NET tests call, against all <see cref="SoftBodyCollider"/>s. One body per job
+    /// same function the .NET tests call, against all <see cref="SoftBodyCollider"/>s, gathered once per step. With a
+    /// <see cref="SoftBodyWorldSettings"/> singleton, every body uses the world's gravity and at least its substeps
+    /// (<see cref="SoftBodyWorldSettings.Apply"/>). One body per job
     /// index and no reductions across bodies, so results do not depend on scheduling. After the step the
     /// entity's <see cref="LocalTransform"/> follows the body (<see cref="SoftBodyPlacement.ToLocalTransform"/>),
     /// <see cref="SoftBodyState"/> holds the report, and a NaN-guard reset logs a warning naming the
@@ -33,6 +35,7 @@ namespace SoftBodyDynamics
         public void OnUpdate(ref SystemState state)
         {
             float dt = SystemAPI.Time.DeltaTime;
+            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
             NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
 
             new ApplyImpulseJob().ScheduleParallel();
@@ -40,6 +43,8 @@ namespace SoftBodyDynamics
             {
                 Colliders = colliders,
                 DeltaTime = dt,
+                HasWorldSettings = hasWorld,
+                World = world,
                 QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>(),
             }.ScheduleParallel();
             colliders.Dispose(state.Dependency);
@@ -70,6 +75,10 @@ namespace SoftBodyDynamics
             [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
+            /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
+            public bool HasWorldSettings;
+            /// <summary>The world's settings (when <see cref="HasWorldSettings"/>).</summary>
+            public SoftBodyWorldSettings World;
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
             [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
 
@@ -90,7 +99,8 @@ namespace SoftBodyDynamics
                 var scratch = new NativeArray<float3>(SoftBodyBuffers.ScratchPerParticle * n, Allocator.Temp,
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
-                ShapeMatchingStepReport report = ShapeMatchingSolver.Step(blob.AsModel(), settings.Value,
+                ShapeMatchingParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
+                ShapeMatchingStepReport report = ShapeMatchingSolver.Step(blob.AsModel(), parameters,
                     Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();
 

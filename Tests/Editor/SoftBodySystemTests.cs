@@ -175,8 +175,9 @@ namespace SoftBodyDynamics.Tests.Editor
             // the centre of mass by a·h²·N(N+1)/2 exactly: the shape-matching pull is internal and the damping
             // spares rigid motion. (The continuous ½·a·t² differs from it by a·h·t/2 ≈ 1 cm.) Round-off: N
             // position updates at |y| ≤ 5.1 m, each within half an ulp (2.4e-7 m), stay below 3e-5 m.
-            int n = 30 * parameters.Substeps;
-            double h = (double)k_Dt / parameters.Substeps;
+            int substeps = ShapeMatchingSolver.SubstepCount(parameters, k_Dt);
+            int n = 30 * substeps;
+            double h = (double)k_Dt / substeps;
             float expectedY = (float)(startY + parameters.Acceleration.y * h * h * n * (n + 1) / 2.0);
             SoftBodyStatus status = Status(body);
             Assert.That(status.Center.y, Is.EqualTo(expectedY).Within(1e-4f), "free fall of the centre of mass");
@@ -187,6 +188,29 @@ namespace SoftBodyDynamics.Tests.Editor
             LocalTransform transform = m_Manager.GetComponentData<LocalTransform>(body);
             float3 pivot = status.Center - math.rotate(status.Rotation, m_Model.BodyRest.RestCenter);
             Assert.That(math.distance(transform.Position, pivot), Is.LessThan(1e-5f), "the entity follows the body");
+        }
+
+        [Test]
+        public void WorldSettings_ReplaceEveryBodysGravityAndRaiseItsSubsteps()
+        {
+            ShapeMatchingParameters parameters = ShapeMatchingParameters.Default;
+            parameters.Substeps = 1;
+            parameters.MaxSubstepPhase = 1000f; // exactly the requested substeps
+            Entity body = CreateBody(new float3(0f, 5f, 0f), quaternion.identity, parameters);
+            Entity world = m_Manager.CreateEntity();
+            var settings = new SoftBodyWorldSettings { Gravity = new float3(1f, 0f, 0f), MinSubsteps = 3 };
+            m_Manager.AddComponentData(world, settings);
+            float3 start = new float3(0f, 5f, 0f) + m_Model.BodyRest.RestCenter;
+
+            Update(10);
+
+            // Sideways "gravity" of 1 m/s² over 10 steps of 3 substeps: x moves by a·h²·N(N+1)/2 (see the free-fall test), y not at all.
+            int n = 30;
+            double h = (double)k_Dt / 3;
+            SoftBodyStatus status = Status(body);
+            Assert.That(m_Manager.GetComponentData<SoftBodyState>(body).LastReport.Substeps, Is.EqualTo(3), "the world's minimum substeps");
+            Assert.That(status.Center.x, Is.EqualTo((float)(start.x + h * h * n * (n + 1) / 2.0)).Within(1e-5f), "the world's gravity");
+            Assert.That(status.Center.y, Is.EqualTo(start.y).Within(1e-5f), "the body's own gravity is replaced");
         }
 
         [Test]

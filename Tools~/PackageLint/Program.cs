@@ -175,14 +175,44 @@ namespace SoftBodyDynamics.PackageLint
             }
             Report("asmdefs parse, have unique names, and their references resolve", problems);
 
+            // Everything under Tests/ and Benchmarks/ (the benchmarks and the scenarios they share with the headless
+            // runner) exists for tests only and must stay out of players.
             var testProblems = new List<string>();
-            foreach (var (rel, json) in docs.Where(d => d.rel.StartsWith("Tests/") || d.rel.StartsWith("Benchmarks/SoftBodyDynamics.Benchmarks.asmdef")))
+            foreach (var (rel, json) in docs.Where(d => d.rel.StartsWith("Tests/") || d.rel.StartsWith("Benchmarks/")))
             {
-                bool gated = json.TryGetProperty("defineConstraints", out JsonElement dc)
-                             && dc.EnumerateArray().Any(e => e.GetString() == "UNITY_INCLUDE_TESTS");
-                if (!gated) testProblems.Add($"{rel}: test assembly without the UNITY_INCLUDE_TESTS define constraint");
+                if (!IsTestGated(json)) testProblems.Add($"{rel}: test assembly without the UNITY_INCLUDE_TESTS define constraint");
+                if (json.TryGetProperty("autoReferenced", out JsonElement auto) && auto.ValueKind == JsonValueKind.True)
+                    testProblems.Add($"{rel}: test assembly with autoReferenced true (game scripts would see it)");
             }
             Report("test assemblies compile only with UNITY_INCLUDE_TESTS", testProblems);
+
+            // An assembly that players compile cannot reference one that only test runs compile.
+            var gatedNames = new HashSet<string>(docs.Where(d => IsTestGated(d.json)).Select(d => d.json.GetProperty("name").GetString()));
+            var gatedGuids = new HashSet<string>(guids.Where(kv => gatedNames.Contains(AsmdefName(root, kv.Value))).Select(kv => kv.Key));
+            var leakProblems = new List<string>();
+            foreach (var (rel, json) in docs.Where(d => !IsTestGated(d.json)))
+            {
+                if (!json.TryGetProperty("references", out JsonElement refs)) continue;
+                foreach (JsonElement r in refs.EnumerateArray())
+                {
+                    string reference = r.GetString() ?? "";
+                    bool gated = reference.StartsWith("GUID:") ? gatedGuids.Contains(reference.Substring(5)) : gatedNames.Contains(reference);
+                    if (gated) leakProblems.Add($"{rel}: references test-only assembly {reference}, which players do not compile");
+                }
+            }
+            Report("player assemblies reference no test-only assembly", leakProblems);
+        }
+
+        static bool IsTestGated(JsonElement asmdef) =>
+            asmdef.TryGetProperty("defineConstraints", out JsonElement dc)
+            && dc.EnumerateArray().Any(e => e.GetString() == "UNITY_INCLUDE_TESTS");
+
+        /// <summary>The "name" of the asmdef at <paramref name="rel"/>, or null when <paramref name="rel"/> is not a readable asmdef.</summary>
+        static string AsmdefName(string root, string rel)
+        {
+            if (!rel.EndsWith(".asmdef")) return null;
+            try { return JsonDocument.Parse(File.ReadAllText(Path.Combine(root, rel))).RootElement.GetProperty("name").GetString(); }
+            catch (Exception e) when (e is JsonException || e is KeyNotFoundException || e is IOException) { return null; }
         }
 
         static readonly Regex s_SemVer = new Regex(@"^\d+\.\d+\.\d+(-[0-9A-Za-z.-]+)?$");

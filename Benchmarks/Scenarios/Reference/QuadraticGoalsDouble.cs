@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// Float64 reference of the quadratic shape-matching goals of one cluster (Müller et al. 2005,
     /// eq. 11–12, with q̃ centred as the solver does), without the length scaling the float32 solver
     /// uses (scaling changes nothing in exact arithmetic): Ã = Ã_pq Ã_qq⁻¹ by Gaussian elimination with partial pivoting, R from the
-    /// float64 SVD, the linear block Ã₀ scaled to det Ã₀ = 1, gᵢ = c + (β Ã + (1 − β)[R 0 0]) q̃ᵢ.
+    /// float64 SVD, the dilation δ R removed from the linear block, gᵢ = c + (β Ã + (1 − β)[R 0 0]) q̃ᵢ.
     /// </summary>
     public static class QuadraticGoalsDouble
     {
@@ -61,17 +61,23 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int r = 0; r < 3; r++)
                 rhs[a, r] = apq[r, a];
             double[,] aT = Solve(aqq, rhs);
-            // Volume: the linear block Ã₀ is scaled to det Ã₀ = 1 (§4.3), as the solver does.
-            double det = aT[0, 0] * (aT[1, 1] * aT[2, 2] - aT[2, 1] * aT[1, 2])
-                         - aT[1, 0] * (aT[0, 1] * aT[2, 2] - aT[2, 1] * aT[0, 2])
-                         + aT[2, 0] * (aT[0, 1] * aT[1, 2] - aT[1, 1] * aT[0, 2]);
-            if (det > 0)
+            // Volume: δ R q̃ with δ = Σ wᵢ pᵢ·R qᵢ / Σ wᵢ |qᵢ|² − 1 is removed from the β part, as the solver does.
+            double pq = 0, qq = 0;
+            for (int i = 0; i < n; i++)
             {
-                double scale = 1.0 / Math.Cbrt(det);
-                for (int a = 0; a < 3; a++)
+                double px = x[i].x - cx, py = x[i].y - cy, pz = x[i].z - cz;
+                double qx = rest[i].x - rx, qy = rest[i].y - ry, qz = rest[i].z - rz;
                 for (int r = 0; r < 3; r++)
-                    aT[a, r] *= scale;
+                {
+                    double rq = rot[r, 0] * qx + rot[r, 1] * qy + rot[r, 2] * qz;
+                    pq += w[i] * (r == 0 ? px : r == 1 ? py : pz) * rq;
+                }
+                qq += w[i] * (qx * qx + qy * qy + qz * qz);
             }
+            double dilation = pq / qq - 1.0;
+            for (int a = 0; a < 3; a++)
+            for (int r = 0; r < 3; r++)
+                aT[a, r] -= dilation * rot[r, a];
             var result = new double[n, 3];
             for (int i = 0; i < n; i++)
             for (int r = 0; r < 3; r++)

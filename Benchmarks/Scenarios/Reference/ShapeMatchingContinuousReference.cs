@@ -14,8 +14,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <item>gᵢ(x) = Σ_c (1/nᵢ) g_c,i: the average over the particle's clusters of each cluster's goal c_c + T_c q_c,i,
     /// with c_c = Σ w x / Σ w, A_pq = Σ w (x − c_c) qᵀ, weights wᵢ = mᵢ/nᵢ, and T_c = R (rigid: the polar rotation of
     /// A_pq, by Higham's iteration, <see cref="Matrix3d.PolarRotation"/>), R + β·fade·LimitStrain(Ã − R) (linear:
-    /// Ã = A/∛det A, A = A_pq A_qq⁻¹, the strain limited to a Frobenius norm of 1 and faded out near a degenerate
-    /// det exactly as <see cref="VolumePreservation.LinearGoalTransform"/> specifies), or the quadratic goals of
+    /// Ã = A/∛det A, A = A_pq A_qq⁻¹, the strain limited to a Frobenius norm of 1 and faded out toward a flat or
+    /// inverted cluster exactly as <see cref="VolumePreservation.LinearGoalTransform"/> specifies), or the quadratic goals of
     /// <see cref="QuadraticGoalsDouble"/> (the float64 statement of the solver's quadratic mode; it has no strain
     /// limit, so the quadratic reference holds while the quadratic strain stays below 1);</item>
     /// <item>P removes from the pull its mass-weighted mean and the rigid rotation δθ × (xᵢ − x_cm) with
@@ -299,7 +299,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             if (!(det > floor))
                 return r;
             Matrix3d normalized = (1.0 / Math.Cbrt(det)) * an;
-            double fade = Math.Min(1.0, Math.Max(0.0, (det - floor) / (9.0 * floor)));
+            // The solver's weight of the β part (1 away from flat or inverted clusters; its own piecewise-linear rule).
+            double fade = VolumePreservation.BetaFade((float)det);
             Matrix3d strain = normalized - r;
             double norm = Math.Sqrt(strain.FrobeniusSquared);
             if (norm > VolumePreservation.MaxGoalStrain)

@@ -27,6 +27,19 @@ namespace SoftBodyDynamics.Solvers
         public const float MaxGoalStrain = 1f;
 
         /// <summary>
+        /// Relative determinant (det of A over its largest entry cubed) from which a goal follows the full β. Below
+        /// it the β part fades linearly to zero at <see cref="DefaultRelativeDeterminantFloor"/>, so a cluster
+        /// squashed nearly flat (one axis below about a twentieth of the others) or turned inside out gets rigid goals
+        /// that unfold it. A goal that followed the flat shape instead, with its strain limited, holds a body with
+        /// β near 1 flat indefinitely.
+        /// </summary>
+        public const float FadeEnd = 0.05f;
+
+        /// <summary>Weight (0 to 1) of the β part for relative determinant <paramref name="relativeDeterminant"/>.</summary>
+        public static float BetaFade(float relativeDeterminant) =>
+            math.saturate((relativeDeterminant - DefaultRelativeDeterminantFloor) / (FadeEnd - DefaultRelativeDeterminantFloor));
+
+        /// <summary>
         /// Returns A / ∛det(A) when det(A) is finite and above the floor; otherwise returns false and
         /// leaves <paramref name="normalized"/> at identity.
         /// </summary>
@@ -58,7 +71,7 @@ namespace SoftBodyDynamics.Solvers
         /// Goal transform of the linear mode: R + β·(Ã − R), i.e. β·Ã + (1 − β)·R with Ã the
         /// volume-normalised linear transform (Müller et al. 2005, eq. 8 and §4.3), made safe for
         /// squashed clusters in two ways: the strain Ã − R is limited to <see cref="MaxGoalStrain"/>,
-        /// and it fades out linearly as det falls from 10× the floor to the floor, so the fallback to
+        /// and it fades out linearly as the relative det falls from <see cref="FadeEnd"/> to the floor, so the fallback to
         /// R is continuous (no jump in the goals, hence no kick, when a cluster flattens).
         /// </summary>
         /// <param name="aLinear">A = A_pq · A_qq⁻¹.</param>
@@ -75,8 +88,7 @@ namespace SoftBodyDynamics.Solvers
                 return rotation;
             }
             rigidFallback = false;
-            float fade = math.saturate((det - floor) / (9f * floor));
-            return rotation + (math.saturate(beta) * fade) * LimitStrain(normalized - rotation);
+            return rotation + (math.saturate(beta) * BetaFade(det)) * LimitStrain(normalized - rotation);
         }
 
         /// <summary>The strain scaled down to a Frobenius norm of at most <see cref="MaxGoalStrain"/>.</summary>

@@ -144,12 +144,26 @@ namespace SoftBodyDynamics.Solvers
             r = new float3x3(cluster.Rotation);
             aLinear = cluster.Rest.LinearValid ? math.mul(p0, cluster.Rest.AqqInverse) * (length * length) : r;
             QuadraticShapeMatching.Transform(p0, p1, p2, inverseBlocks, out float3x3 t0, out float3x3 t1, out float3x3 t2);
-            // Volume: the linear block is normalised to det Ã₀ = 1 as in the linear mode (§4.3), so the quadratic
-            // goals neither grow nor shrink the cluster; a degenerate or inverted block contributes no linear strain.
-            float3x3 s0 = VolumePreservation.TryNormalize(t0, out float3x3 t0Normalized) ? t0Normalized - r : float3x3.zero;
-            // β blend of the 3×9 strain [Ã₀ − R, Ã₁, Ã₂], limited like the linear mode's.
+            // Volume: the goals must not follow a uniform dilation of the cluster. Its amplitude in the cluster's
+            // weighted inner product is δ = Σ wᵢ pᵢ·R qᵢ / Σ wᵢ |qᵢ|² − 1 = tr(Rᵀ p0) / M − 1 (Σ wᵢ|qᵢ|² = M L²), and
+            // δ·R qᵢ is removed from the β part. That removal is the orthogonal projection onto the dilation field,
+            // so the pull stays the gradient of an energy (energy-stable without damping); normalising Ã₀ by ∛det
+            // instead, as the linear mode does, is not symmetric here (Ã_qq couples the linear and quadratic blocks)
+            // and makes undamped small clusters grow.
+            float dilation = cluster.Rest.TotalMass > 0f
+                ? (math.dot(r.c0, p0.c0) + math.dot(r.c1, p0.c1) + math.dot(r.c2, p0.c2)) / cluster.Rest.TotalMass - 1f
+                : 0f;
+            float3x3 s0 = math.isfinite(dilation) ? t0 - (1f + dilation) * r : float3x3.zero;
+            // A flat, collapsed or inverted linear block (det Ã₀ at or below the linear mode's floor) must not be
+            // followed: the β part fades out toward the floor and the goals become rigid, as in the linear mode.
+            const float floor = VolumePreservation.DefaultRelativeDeterminantFloor;
+            VolumePreservation.TryNormalize(t0, out _, out float relativeDeterminant, floor);
+            float fade = VolumePreservation.BetaFade(relativeDeterminant);
+            if (fade < 1f)
+                counters.Fallbacks++;
+            // β blend of the 3×9 strain [Ã₀ − (1 + δ)R, Ã₁, Ã₂], limited like the linear mode's.
             float strain = math.sqrt(SquaredNorm(s0) + SquaredNorm(t1) + SquaredNorm(t2));
-            float beta = math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
+            float beta = fade * math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
             float3x3 g0 = r + beta * s0, g1 = beta * t1, g2 = beta * t2;
             var goals = state.Goals;
             for (int k = start; k < end; k++)

@@ -5,7 +5,8 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// Plastic flow of a cluster's rest shape (Müller et al. 2005, §4.5). With A = A_pq A_qq⁻¹ = R S
     /// the deformation relative to the current rest shape is S = Rᵀ A. While ‖S − I‖_F exceeds the
-    /// yield, Sₚ ← (I + h·creep·(S − I)) Sₚ; then ‖Sₚ − I‖_F is clamped to the maximum deformation and
+    /// yield, Sₚ ← sym((I + h·creep·(S − I)) Sₚ); then ‖Sₚ − I‖_F is clamped to the maximum deformation (once there,
+    /// it flows no further) and
     /// Sₚ is divided by ∛det Sₚ so plastic flow keeps the volume. Rest offsets become Sₚ qᵢ, hence
     /// A_qq' = Sₚ A_qq Sₚᵀ and A_qq'⁻¹ = Sₚ⁻ᵀ A_qq⁻¹ Sₚ⁻¹.
     /// </summary>
@@ -30,10 +31,21 @@ namespace SoftBodyDynamics.Solvers
             if (!(strainNorm > parameters.Yield) || !math.isfinite(strainNorm))
                 return false;
             float3x3 sp = math.mul(float3x3.identity + (h * parameters.Creep) * strain, cluster.PlasticDeformation);
+            // The product of two symmetric matrices is not symmetric: its antisymmetric part would rotate the rest
+            // shape a little at every update, and rest shapes that turn in overlapping clusters roll the body across
+            // the floor. Plastic flow is a stretch of the rest shape, so only the symmetric part is kept.
+            sp = 0.5f * (sp + math.transpose(sp));
             float3x3 excess = sp - float3x3.identity;
             float excessNorm = FrobeniusNorm(excess);
             if (excessNorm > parameters.MaxDeformation)
+            {
+                // At the bound the material has hardened: flow that would take it further is refused. Scaling it back
+                // onto the bound instead lets Sₚ slide along the bound forever while the load keeps the strain above
+                // the yield, and a rest shape that never stops changing walks the body across the floor.
+                if (FrobeniusNorm(cluster.PlasticDeformation - float3x3.identity) >= parameters.MaxDeformation * 0.999f)
+                    return false;
                 sp = float3x3.identity + excess * (parameters.MaxDeformation / excessNorm);
+            }
             float det = math.determinant(sp);
             if (!(det > 1e-6f) || !Finite.All(sp))
                 return false;

@@ -7,6 +7,9 @@ namespace Unity.Entities
     {
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.CreateEntity.html
         public Entity CreateEntity() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.DestroyEntity.html
+        // (source: Unity.Entities/EntityManager.cs, 1.4.2: public void DestroyEntity(Entity entity))
+        public void DestroyEntity(Entity entity) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.Exists.html
         public bool Exists(Entity entity) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.AddComponent.html

@@ -17,7 +17,9 @@ namespace Unity.Entities
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.html
-    public struct SystemState
+    // Declared as in the source (Unity.Entities/SystemState.cs, 1.4.2): `public unsafe ref struct SystemState`.
+    // A ref struct cannot be boxed, captured by a lambda or stored in a class field, as in Unity.
+    public unsafe ref struct SystemState
     {
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.EntityManager.html
         public EntityManager EntityManager => throw null;

@@ -13,6 +13,8 @@ namespace Unity.Entities
         public static SystemAPIQueryBuilder QueryBuilder() => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPI.GetBufferLookup.html
         public static BufferLookup<T> GetBufferLookup<T>(bool isReadOnly = false) where T : unmanaged, IBufferElementData => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPI.TryGetSingleton.html
+        public static bool TryGetSingleton<T>(out T value) where T : unmanaged, IComponentData => throw null;
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPIQueryBuilder.html

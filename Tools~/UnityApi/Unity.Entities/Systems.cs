@@ -7,6 +7,8 @@ namespace Unity.Entities
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.html
     public abstract partial class ComponentSystemBase
     {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.Enabled.html
+        public bool Enabled { get => throw null; set => throw null; }
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemBase.html

@@ -9,6 +9,8 @@ namespace Unity.Entities
     {
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.-ctor.html
         public World(string name, WorldFlags flags = WorldFlags.Simulation) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Name.html
+        public string Name { get => throw null; }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Unmanaged.html
         public WorldUnmanaged Unmanaged => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.EntityManager.html
@@ -17,6 +19,8 @@ namespace Unity.Entities
         public void SetTime(TimeData newTimeData) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.GetExistingSystemManaged.html
         public T GetExistingSystemManaged<T>() where T : ComponentSystemBase => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.GetOrCreateSystemManaged.html
+        public T GetOrCreateSystemManaged<T>() where T : ComponentSystemBase => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Dispose.html
         public void Dispose() => throw null;
     }

@@ -2,6 +2,8 @@
 // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3x3.html
 // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.quaternion.html
 // float3x3 is column-major (fields c0, c1, c2); operator * is component-wise, math.mul is the product.
+// The conversions between float3x3 and quaternion follow com.unity.mathematics 1.3.2 (matrix.cs, quaternion.cs)
+// operation for operation, so they give Unity's bits, including the sign Unity picks for the quaternion.
 using System;
 
 namespace Unity.Mathematics
@@ -25,17 +27,24 @@ namespace Unity.Mathematics
 
         public float3x3(float v) { c0 = v; c1 = v; c2 = v; }
 
-        /// <summary>Rotation matrix of a unit quaternion.</summary>
+        /// <summary>
+        /// Rotation matrix of a unit quaternion, evaluated as Unity does (v2 = v + v; the sign flips of
+        /// <c>asuint(v.yxw) ^ npn</c> etc. are negations):
+        /// c0 = v2.y·(−y, x, −w) − v2.z·(z, −w, −x) + (1, 0, 0),
+        /// c1 = v2.z·(−w, −z, y) − v2.x·(−y, x, −w) + (0, 1, 0),
+        /// c2 = v2.x·(z, −w, −x) − v2.y·(−w, −z, y) + (0, 0, 1).
+        /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3x3.-ctor.html#Unity_Mathematics_float3x3__ctor_Unity_Mathematics_quaternion_
+        /// </summary>
         public float3x3(quaternion q)
         {
-            float x = q.value.x, y = q.value.y, z = q.value.z, w = q.value.w;
-            float x2 = x + x, y2 = y + y, z2 = z + z;
-            float xx = x * x2, yy = y * y2, zz = z * z2;
-            float xy = x * y2, xz = x * z2, yz = y * z2;
-            float wx = w * x2, wy = w * y2, wz = w * z2;
-            c0 = new float3(1f - (yy + zz), xy + wz, xz - wy);
-            c1 = new float3(xy - wz, 1f - (xx + zz), yz + wx);
-            c2 = new float3(xz + wy, yz - wx, 1f - (xx + yy));
+            float4 v = q.value;
+            float4 v2 = v + v;
+            float3 yxwNpn = new float3(-v.y, v.x, -v.w);
+            float3 zwxPnn = new float3(v.z, -v.w, -v.x);
+            float3 wzyNnp = new float3(-v.w, -v.z, v.y);
+            c0 = v2.y * yxwNpn - v2.z * zwxPnn + new float3(1f, 0f, 0f);
+            c1 = v2.z * wzyNnp - v2.x * yxwNpn + new float3(0f, 1f, 0f);
+            c2 = v2.x * zwxPnn - v2.y * wzyNnp + new float3(0f, 0f, 1f);
         }
 
         public unsafe ref float3 this[int index]
@@ -57,7 +66,7 @@ namespace Unity.Mathematics
 
         public bool Equals(float3x3 o) => c0.Equals(o.c0) && c1.Equals(o.c1) && c2.Equals(o.c2);
         public override bool Equals(object o) => o is float3x3 v && Equals(v);
-        public override int GetHashCode() => HashCode.Combine(c0, c1, c2);
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() =>
             $"float3x3({c0.x}f, {c1.x}f, {c2.x}f,  {c0.y}f, {c1.y}f, {c2.y}f,  {c0.z}f, {c1.z}f, {c2.z}f)";
     }
@@ -70,33 +79,41 @@ namespace Unity.Mathematics
         public quaternion(float x, float y, float z, float w) { value = new float4(x, y, z, w); }
         public quaternion(float4 value) { this.value = value; }
 
-        /// <summary>Quaternion of an orthonormal rotation matrix.</summary>
+        /// <summary>
+        /// Quaternion of an orthonormal rotation matrix, by Unity's branch-free method: with u, v, w the columns,
+        /// s = sign bit of u.x and t = v.y ± w.z (w.z negated when u.x &lt; 0), it forms
+        /// (1 + |u.x|, u.y, w.x, v.z) + (t, v.x, u.z, w.y) with per-lane sign flips, then swaps lanes by the
+        /// signs of u.x and t and normalizes. The result is one of ±q, chosen exactly as Unity chooses.
+        /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.quaternion.-ctor.html#Unity_Mathematics_quaternion__ctor_Unity_Mathematics_float3x3_
+        /// </summary>
         public quaternion(float3x3 m)
         {
-            // Shepperd's method: pick the largest of w, x, y, z to divide by.
-            float t = m.c0.x + m.c1.y + m.c2.z;
-            if (t > 0f)
-            {
-                float s = math.sqrt(t + 1f) * 2f;
-                value = new float4((m.c1.z - m.c2.y) / s, (m.c2.x - m.c0.z) / s, (m.c0.y - m.c1.x) / s, 0.25f * s);
-            }
-            else if (m.c0.x > m.c1.y && m.c0.x > m.c2.z)
-            {
-                float s = math.sqrt(1f + m.c0.x - m.c1.y - m.c2.z) * 2f;
-                value = new float4(0.25f * s, (m.c1.x + m.c0.y) / s, (m.c2.x + m.c0.z) / s, (m.c1.z - m.c2.y) / s);
-            }
-            else if (m.c1.y > m.c2.z)
-            {
-                float s = math.sqrt(1f + m.c1.y - m.c0.x - m.c2.z) * 2f;
-                value = new float4((m.c1.x + m.c0.y) / s, 0.25f * s, (m.c2.y + m.c1.z) / s, (m.c2.x - m.c0.z) / s);
-            }
-            else
-            {
-                float s = math.sqrt(1f + m.c2.z - m.c0.x - m.c1.y) * 2f;
-                value = new float4((m.c2.x + m.c0.z) / s, (m.c2.y + m.c1.z) / s, 0.25f * s, (m.c0.y - m.c1.x) / s);
-            }
-            value = math.normalize(value);
+            const uint S = 0x80000000u;
+            float3 u = m.c0, v = m.c1, w = m.c2;
+            uint uSign = math.asuint(u.x) & S;
+            float t = v.y + math.asfloat(math.asuint(w.z) ^ uSign);
+            uint uMask = (uint)((int)uSign >> 31);
+            uint tMask = (uint)(math.asint(t) >> 31);
+            float tr = 1.0f + math.abs(u.x);
+
+            // sign_flips = (0, S, S, S) ^ (uMask & (0, S, 0, S)) ^ (tMask & (S, S, S, 0))
+            uint f0 = 0u ^ (uMask & 0u) ^ (tMask & S);
+            uint f1 = S ^ (uMask & S) ^ (tMask & S);
+            uint f2 = S ^ (uMask & 0u) ^ (tMask & S);
+            uint f3 = S ^ (uMask & S) ^ (tMask & 0u);
+            float4 a = new float4(tr, u.y, w.x, v.z) + new float4(
+                math.asfloat(math.asuint(t) ^ f0), math.asfloat(math.asuint(v.x) ^ f1),
+                math.asfloat(math.asuint(u.z) ^ f2), math.asfloat(math.asuint(w.y) ^ f3));
+
+            // value = select(value, value.zwxy, u.x < 0); then value = select(value.wzyx, value, t < 0)
+            float4 b = new float4(Blend(a.x, a.z, uMask), Blend(a.y, a.w, uMask), Blend(a.z, a.x, uMask), Blend(a.w, a.y, uMask));
+            float4 c = new float4(Blend(b.w, b.x, tMask), Blend(b.z, b.y, tMask), Blend(b.y, b.z, tMask), Blend(b.x, b.w, tMask));
+            value = math.normalize(c);
         }
+
+        /// <summary>The bits of <paramref name="whenClear"/> where <paramref name="mask"/> is 0, of <paramref name="whenSet"/> where it is 1.</summary>
+        static float Blend(float whenClear, float whenSet, uint mask) =>
+            math.asfloat((math.asuint(whenClear) & ~mask) | (math.asuint(whenSet) & mask));
 
         /// <summary>Rotation of <paramref name="angle"/> radians about the unit vector <paramref name="axis"/>.</summary>
         public static quaternion AxisAngle(float3 axis, float angle)
@@ -107,7 +124,7 @@ namespace Unity.Mathematics
 
         public bool Equals(quaternion o) => value.Equals(o.value);
         public override bool Equals(object o) => o is quaternion v && Equals(v);
-        public override int GetHashCode() => value.GetHashCode();
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"quaternion({value.x}f, {value.y}f, {value.z}f, {value.w}f)";
     }
 }

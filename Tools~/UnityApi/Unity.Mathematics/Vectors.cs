@@ -1,5 +1,7 @@
 // Stand-in vector types. Semantics per the Unity.Mathematics 1.3 API reference:
 // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3.html (float2, float4, bool3, int3 alike)
+// Members follow com.unity.mathematics 1.3.2 (Unity.Mathematics/float3.gen.cs and the other *.gen.cs files):
+// component-wise operators, swizzles with setters, a by-value indexer, GetHashCode = (int)math.hash(this).
 using System;
 using System.Runtime.CompilerServices;
 
@@ -20,7 +22,7 @@ namespace Unity.Mathematics
         public static float2 operator -(float2 a) => new float2(-a.x, -a.y);
         public bool Equals(float2 o) => x == o.x && y == o.y;
         public override bool Equals(object o) => o is float2 v && Equals(v);
-        public override int GetHashCode() => HashCode.Combine(x, y);
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"float2({x}f, {y}f)";
     }
 
@@ -34,16 +36,28 @@ namespace Unity.Mathematics
         public float3(float v) { x = v; y = v; z = v; }
         public float3(float2 xy, float z) { x = xy.x; y = xy.y; this.z = z; }
         public static implicit operator float3(float v) => new float3(v);
-        public float2 xy => new float2(x, y);
-        public float2 xz => new float2(x, z);
-        public float3 yzx => new float3(y, z, x);
-        public float3 zxy => new float3(z, x, y);
-        public unsafe ref float this[int index]
+        public float2 xy { get => new float2(x, y); set { x = value.x; y = value.y; } }
+        public float2 xz { get => new float2(x, z); set { x = value.x; z = value.y; } }
+        public float3 yzx { get => new float3(y, z, x); set { y = value.x; z = value.y; x = value.z; } }
+        public float3 zxy { get => new float3(z, x, y); set { z = value.x; x = value.y; y = value.z; } }
+
+        /// <summary>
+        /// The element at <paramref name="index"/>, by value with a setter, as in Unity.Mathematics 1.3.2
+        /// (<c>unsafe public float this[int index] { get; set; }</c>, not a ref return). The range check is Unity's
+        /// ENABLE_UNITY_COLLECTIONS_CHECKS one, on in the Editor.
+        /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3.Item.html
+        /// </summary>
+        public unsafe float this[int index]
         {
             get
             {
                 if ((uint)index >= 3) throw new ArgumentException("index must be between[0...2]");
-                fixed (float3* array = &this) { return ref ((float*)array)[index]; }
+                fixed (float3* array = &this) { return ((float*)array)[index]; }
+            }
+            set
+            {
+                if ((uint)index >= 3) throw new ArgumentException("index must be between[0...2]");
+                fixed (float* array = &x) { array[index] = value; }
             }
         }
         public static float3 operator +(float3 a, float3 b) => new float3(a.x + b.x, a.y + b.y, a.z + b.z);
@@ -65,7 +79,7 @@ namespace Unity.Mathematics
         public static bool3 operator !=(float3 a, float3 b) => new bool3(a.x != b.x, a.y != b.y, a.z != b.z);
         public bool Equals(float3 o) => x == o.x && y == o.y && z == o.z;
         public override bool Equals(object o) => o is float3 v && Equals(v);
-        public override int GetHashCode() => HashCode.Combine(x, y, z);
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"float3({x}f, {y}f, {z}f)";
         public string ToString(string format, IFormatProvider formatProvider) =>
             $"float3({x.ToString(format, formatProvider)}f, {y.ToString(format, formatProvider)}f, {z.ToString(format, formatProvider)}f)";
@@ -90,7 +104,7 @@ namespace Unity.Mathematics
         public static float4 operator -(float4 a) => new float4(-a.x, -a.y, -a.z, -a.w);
         public bool Equals(float4 o) => x == o.x && y == o.y && z == o.z && w == o.w;
         public override bool Equals(object o) => o is float4 v && Equals(v);
-        public override int GetHashCode() => HashCode.Combine(x, y, z, w);
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"float4({x}f, {y}f, {z}f, {w}f)";
     }
 
@@ -107,7 +121,7 @@ namespace Unity.Mathematics
         public static int3 operator -(int3 a, int3 b) => new int3(a.x - b.x, a.y - b.y, a.z - b.z);
         public bool Equals(int3 o) => x == o.x && y == o.y && z == o.z;
         public override bool Equals(object o) => o is int3 v && Equals(v);
-        public override int GetHashCode() => HashCode.Combine(x, y, z);
+        public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"int3({x}, {y}, {z})";
     }
 

@@ -1,5 +1,8 @@
 // Stand-in for the static class Unity.Mathematics.math. Semantics per
 // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.html
+// Each member follows com.unity.mathematics 1.3.2 (Unity.Mathematics/math.cs, matrix.cs, matrix.gen.cs,
+// quaternion.cs): the same formula with the same order of float operations, so results are bit-identical
+// to Unity's managed (non-Burst) build. Tools~/DotNet/SoftBodyDynamics.Tests.MathematicsStandIn checks them.
 using System;
 using System.Runtime.CompilerServices;
 
@@ -27,8 +30,11 @@ namespace Unity.Mathematics
         // ---- scalar
         [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sqrt(float x) => (float)System.Math.Sqrt(x);
         [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float rsqrt(float x) => 1.0f / sqrt(x);
-        public static float abs(float x) => System.Math.Abs(x);
-        public static int abs(int x) => System.Math.Abs(x);
+        public static float rcp(float x) => 1.0f / x;
+        /// <summary>Clears the sign bit (NaN stays NaN).</summary>
+        public static float abs(float x) => asfloat(asuint(x) & 0x7FFFFFFFu);
+        /// <summary>max(−x, x): int.MinValue stays int.MinValue (no overflow exception).</summary>
+        public static int abs(int x) => max(-x, x);
         public static float min(float a, float b) => float.IsNaN(b) || a < b ? a : b;
         public static float max(float a, float b) => float.IsNaN(b) || a > b ? a : b;
         public static int min(int a, int b) => a < b ? a : b;
@@ -60,7 +66,7 @@ namespace Unity.Mathematics
         public static float asfloat(uint x) => BitConverter.Int32BitsToSingle((int)x);
         public static float asfloat(int x) => BitConverter.Int32BitsToSingle(x);
         public static double sqrt(double x) => System.Math.Sqrt(x);
-        public static double abs(double x) => System.Math.Abs(x);
+        public static double abs(double x) => BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) & 0x7FFFFFFFFFFFFFFF);
         public static double max(double a, double b) => double.IsNaN(b) || a > b ? a : b;
         public static double min(double a, double b) => double.IsNaN(b) || a < b ? a : b;
 
@@ -144,16 +150,24 @@ namespace Unity.Mathematics
             return new quaternion(select(Mathematics.quaternion.identity.value, q.value * rsqrt(len), len > FLT_MIN_NORMAL));
         }
         public static quaternion conjugate(quaternion q) => new quaternion(-q.value.x, -q.value.y, -q.value.z, q.value.w);
-        public static quaternion inverse(quaternion q) => new quaternion(conjugate(q).value / dot(q.value, q.value));
-        /// <summary>Hamilton product a·b (apply b, then a).</summary>
+        /// <summary>rcp(|q|²)·q, then the vector part negated (Unity's order of operations).</summary>
+        public static quaternion inverse(quaternion q)
+        {
+            float4 x = q.value;
+            return new quaternion(rcp(dot(x, x)) * x * new float4(-1.0f, -1.0f, -1.0f, 1.0f));
+        }
+        /// <summary>
+        /// Hamilton product a·b (apply b, then a), evaluated as Unity does:
+        /// a.wwww·b + (a.xyzx·b.wwwx + a.yzxy·b.zxyy)·(1, 1, 1, −1) − a.zxyz·b.yzxz.
+        /// </summary>
         public static quaternion mul(quaternion a, quaternion b)
         {
             float4 p = a.value, q = b.value;
-            return new quaternion(
-                p.w * q.x + p.x * q.w + p.y * q.z - p.z * q.y,
-                p.w * q.y - p.x * q.z + p.y * q.w + p.z * q.x,
-                p.w * q.z + p.x * q.y - p.y * q.x + p.z * q.w,
-                p.w * q.w - p.x * q.x - p.y * q.y - p.z * q.z);
+            float4 wwww = new float4(p.w) * q;
+            float4 sum = new float4(p.x * q.w, p.y * q.w, p.z * q.w, p.x * q.x)
+                         + new float4(p.y * q.z, p.z * q.x, p.x * q.y, p.y * q.y);
+            float4 last = new float4(p.z * q.y, p.x * q.z, p.y * q.x, p.z * q.z);
+            return new quaternion(wwww + sum * new float4(1.0f, 1.0f, 1.0f, -1.0f) - last);
         }
         public static float3 rotate(quaternion q, float3 v)
         {
@@ -161,5 +175,22 @@ namespace Unity.Mathematics
             return v + q.value.w * t + cross(q.value.xyz, t);
         }
         public static float3 mul(quaternion q, float3 v) => rotate(q, v);
+
+        // ---- hashes (what GetHashCode returns, cast to int): csum(asuint(v) * primes) + prime, wrapping
+        // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.hash.html
+        public static uint hash(float2 v) =>
+            unchecked(asuint(v.x) * 0xFA3A3285u + asuint(v.y) * 0xAD55999Du + 0xDCDD5341u);
+        public static uint hash(float3 v) =>
+            unchecked(asuint(v.x) * 0x9B13B92Du + asuint(v.y) * 0x4ABF0813u + asuint(v.z) * 0x86068063u + 0xD75513F9u);
+        public static uint hash(float4 v) =>
+            unchecked(asuint(v.x) * 0xE69626FFu + asuint(v.y) * 0xBD010EEBu + asuint(v.z) * 0x9CEDE1D1u + asuint(v.w) * 0x43BE0B51u + 0xAF836EE1u);
+        public static uint hash(int3 v) =>
+            unchecked((uint)v.x * 0x4C7F6DD1u + (uint)v.y * 0x4822A3E9u + (uint)v.z * 0xAAC3C25Du + 0xD21D0945u);
+        public static uint hash(float3x3 v) =>
+            unchecked(asuint(v.c0.x) * 0x713BD06Fu + asuint(v.c1.x) * 0xB5D0BF63u + asuint(v.c2.x) * 0x56A1530Du
+                      + asuint(v.c0.y) * 0x753AD6ADu + asuint(v.c1.y) * 0xF9102C5Fu + asuint(v.c2.y) * 0x804B722Du
+                      + asuint(v.c0.z) * 0xD19764C7u + asuint(v.c1.z) * 0x9881FB9Fu + asuint(v.c2.z) * 0x738E50E5u
+                      + 0x4FC93C25u);
+        public static uint hash(quaternion q) => hash(q.value);
     }
 }

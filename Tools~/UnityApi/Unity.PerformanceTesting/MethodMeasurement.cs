@@ -24,6 +24,15 @@ namespace Unity.PerformanceTesting.Measurements
         // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_MeasurementCount_System_Int32_
         public MethodMeasurement MeasurementCount(int count) => throw null;
 
+        // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_SetUp_System_Action_
+        // (runs before every invocation of the measured action, warm-up included, outside the timed region:
+        // ExecuteActionWithCleanupSetup in 3.1.0 and 3.5.0)
+        public MethodMeasurement SetUp(Action action) => throw null;
+
+        // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_CleanUp_System_Action_
+        // (runs after every invocation, outside the timed region; same source)
+        public MethodMeasurement CleanUp(Action action) => throw null;
+
         // ...MethodMeasurement.html#Unity_PerformanceTesting_Measurements_MethodMeasurement_Run
         public void Run() => throw null;
     }

@@ -18,6 +18,12 @@ namespace Unity.Collections
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1-ctor.html
         public NativeArray(int length, Allocator allocator, NativeArrayOptions options = NativeArrayOptions.ClearMemory) => throw null;
 
+        // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1-ctor.html (copies the array)
+        public NativeArray(T[] array, Allocator allocator) => throw null;
+
+        // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1-IsCreated.html
+        public bool IsCreated => throw null;
+
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1-Length.html
         public int Length => throw null;
 
@@ -42,6 +48,9 @@ namespace Unity.Collections
 
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.CopyFrom.html
         public void CopyFrom(NativeArray<T> array) => throw null;
+
+        // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.CopyFrom.html
+        public void CopyFrom(T[] array) => throw null;
 
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.Copy.html
         public static void Copy(NativeArray<T> src, int srcIndex, NativeArray<T> dst, int dstIndex, int length) => throw null;

@@ -1,0 +1,49 @@
+using Unity.Entities;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Authoring
+{
+    /// <summary>
+    /// World-level soft-body settings: one per world (put it on one GameObject of a SubScene). Baked into the
+    /// <see cref="SoftBodyWorldSettings"/> singleton; every soft body then uses this gravity and at least these substeps.
+    /// </summary>
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Soft Body Dynamics/Soft Body World")]
+    public sealed class SoftBodyWorldAuthoring : MonoBehaviour
+    {
+        [Tooltip("Acceleration of gravity for every soft body (m/s²). It replaces each body's own Gravity. Default (0, −9.81, 0).")]
+        public Vector3 gravity = UnityMathConversions.ToVector3(SoftBodyWorldSettings.Default.Gravity);
+
+        [Tooltip("Fewest substeps per fixed step for every soft body (1–64); a body's own Substeps applies if larger. Default 1.")]
+        [Range(1, 64)]
+        public int minSubsteps = SoftBodyWorldSettings.Default.MinSubsteps;
+
+        /// <summary>The singleton's value, with the substeps clamped to 1–64 and a non-finite gravity replaced by the default.</summary>
+        public SoftBodyWorldSettings Settings
+        {
+            get
+            {
+                var g = UnityMathConversions.ToFloat3(gravity);
+                bool finite = Unity.Mathematics.math.all(Unity.Mathematics.math.isfinite(g));
+                return new SoftBodyWorldSettings
+                {
+                    Gravity = finite ? g : SoftBodyWorldSettings.Default.Gravity,
+                    MinSubsteps = Unity.Mathematics.math.clamp(minSubsteps, 1, 64),
+                };
+            }
+        }
+    }
+
+    /// <summary>Bakes <see cref="SoftBodyWorldAuthoring"/> into the <see cref="SoftBodyWorldSettings"/> singleton.</summary>
+    public sealed class SoftBodyWorldBaker : Baker<SoftBodyWorldAuthoring>
+    {
+        public override void Bake(SoftBodyWorldAuthoring authoring)
+        {
+            var g = UnityMathConversions.ToFloat3(authoring.gravity);
+            if (!Unity.Mathematics.math.all(Unity.Mathematics.math.isfinite(g)))
+                Debug.LogError($"Soft Body World on '{authoring.name}': Gravity is not finite; the default (0, −9.81, 0) is used.", authoring);
+            Entity entity = GetEntity(TransformUsageFlags.None);
+            AddComponent(entity, authoring.Settings);
+        }
+    }
+}

@@ -1,0 +1,30 @@
+using Unity.Entities;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// World-level settings of every soft body (a singleton; optional). When it exists, every body falls with
+    /// <see cref="Gravity"/> instead of its own <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>
+    /// and takes at least <see cref="MinSubsteps"/> substeps per fixed step. Without it each body uses its own values.
+    /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
+    /// </summary>
+    public struct SoftBodyWorldSettings : IComponentData
+    {
+        /// <summary>Acceleration of gravity for every soft body (m/s²).</summary>
+        public float3 Gravity;
+        /// <summary>Fewest substeps per fixed step for every body (1–64); a body's own minimum applies if larger.</summary>
+        public int MinSubsteps;
+
+        /// <summary>Earth gravity, one substep minimum.</summary>
+        public static SoftBodyWorldSettings Default => new SoftBodyWorldSettings { Gravity = new float3(0f, -9.81f, 0f), MinSubsteps = 1 };
+
+        /// <summary><paramref name="body"/> as this world steps it: the world's gravity and at least its substeps.</summary>
+        public SoftBodyDynamics.Solvers.ShapeMatchingParameters Apply(SoftBodyDynamics.Solvers.ShapeMatchingParameters body)
+        {
+            body.Acceleration = Gravity;
+            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            return body;
+        }
+    }
+}
