@@ -9,11 +9,13 @@ namespace SoftBodyDynamics.Benchmarks
     /// <summary>
     /// Cost and accuracy of <see cref="ShapeMatchingSolver.Step"/> in Unity, on the same scenarios the headless
     /// runner times: <see cref="ShapeMatchingThroughputScenario"/> (a 1000-particle cube on a floor, one 1/60 s
-    /// step of 4 substeps per measurement) and <see cref="ShapeMatchingAccuracyScenario"/> (the 512-particle
-    /// squash-recovery step per measurement, then the scenario's error metrics recorded once each with
-    /// <see cref="Measure.Custom(SampleGroup, double)"/>: volume error, shape error at 1 s and 2 s, momentum drifts,
-    /// resets; all dimensionless). Each sample is the time of one step. This runs the managed build of the
-    /// solver; <see cref="ShapeMatchingBurstPerformanceTests"/> times the same step as a Burst job.
+    /// step of 4 substeps per measurement), <see cref="ShapeMatchingConvergenceScenario"/> (one 1/60 s step of the
+    /// released 216-particle body per measurement, then the scenario's metrics recorded once each with
+    /// <see cref="Measure.Custom(SampleGroup, double)"/>: trajectory error against the float64 reference, observed order,
+    /// the reference's change at half its step, frequency and damping-ratio errors, resets) and
+    /// <see cref="ShapeMatchingConservationScenario"/> (momentum and angular-momentum drift of the spinning blob). Each
+    /// sample is the time of one step. This runs the managed build of the solver;
+    /// <see cref="ShapeMatchingBurstPerformanceTests"/> times the same step as a Burst job.
     /// </summary>
     public class ShapeMatchingPerformanceTests
     {
@@ -30,12 +32,22 @@ namespace SoftBodyDynamics.Benchmarks
         }
 
         [Test, Performance]
-        public void ShapeMatching_Accuracy_512Particles(
+        public void ShapeMatching_Convergence_216Particles(
             [Values] ShapeMatchingMode mode,
             [Values] ShapeMatchingClusterLayout layout,
-            [ValueSource(typeof(ShapeMatchingAccuracySuite), nameof(ShapeMatchingAccuracySuite.SubstepCounts))] int substeps)
+            [ValueSource(typeof(ShapeMatchingConvergenceSuite), nameof(ShapeMatchingConvergenceSuite.SubstepCounts))] int substeps)
         {
-            MeasureScenario(new ShapeMatchingAccuracyScenario(mode, layout, substeps));
+            int index = System.Array.IndexOf(ShapeMatchingConvergenceSuite.SubstepCounts, substeps);
+            int previous = index > 0 ? ShapeMatchingConvergenceSuite.SubstepCounts[index - 1] : 0;
+            MeasureScenario(new ShapeMatchingConvergenceScenario(mode, layout, substeps, previous));
+        }
+
+        [Test, Performance]
+        public void ShapeMatching_Conservation_216Particles(
+            [Values] ShapeMatchingMode mode,
+            [Values] ShapeMatchingClusterLayout layout)
+        {
+            MeasureScenario(new ShapeMatchingConservationScenario(mode, layout));
         }
 
         /// <summary>Times <see cref="IScenario.Step"/>, then records every metric of <see cref="IScenario.Evaluate"/>.</summary>

@@ -53,4 +53,51 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure; null for a suite without an error reference (no such figure).</summary>
         string ErrorMetricForPlot { get; }
     }
+
+    /// <summary>One row of a finished suite, as a summary sees it.</summary>
+    public readonly struct ScenarioOutcome
+    {
+        public readonly string Method;
+        public readonly double NsPerItem;
+        public readonly IReadOnlyList<Metric> Metrics;
+
+        public ScenarioOutcome(string method, double nsPerItem, IReadOnlyList<Metric> metrics)
+        {
+            Method = method;
+            NsPerItem = nsPerItem;
+            Metrics = metrics;
+        }
+
+        /// <summary>The named metric, or NaN when the row does not report it.</summary>
+        public double Value(string name)
+        {
+            foreach (Metric m in Metrics)
+                if (m.Name == name)
+                    return m.Value;
+            return double.NaN;
+        }
+    }
+
+    /// <summary>A suite that also writes a summary (Markdown) of all its rows, printed and added to the report after its table.</summary>
+    public interface IScenarioSuiteSummary
+    {
+        /// <summary>Markdown: tables and sentences; the rows are in the order the suite yielded them.</summary>
+        string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick);
+    }
+
+    /// <summary>
+    /// A suite that says how its accuracy-versus-cost figure is drawn: which rows form a series (joined by a line in
+    /// cost order), what labels the first and last point of a series, and what the cost axis is.
+    /// </summary>
+    public interface IScenarioSuiteFigure
+    {
+        /// <summary>The series a row belongs to (its legend entry).</summary>
+        string Series(ScenarioOutcome row);
+        /// <summary>The label of a row's point (drawn at the two ends of each series); rows of a series with the same label are one point.</summary>
+        string PointLabel(ScenarioOutcome row);
+        /// <summary>Title of the cost axis.</summary>
+        string CostLabel { get; }
+        /// <summary>A row's cost (the x value).</summary>
+        double Cost(ScenarioOutcome row);
+    }
 }

@@ -9,7 +9,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             new RotationExtractionSuite(),
             new ShapeMatchingThroughputSuite(),
-            new ShapeMatchingAccuracySuite(),
+            new ShapeMatchingConvergenceSuite(),
+            new ShapeMatchingFrameRateSuite(),
+            new ShapeMatchingConservationSuite(),
         };
     }
 }

@@ -43,6 +43,13 @@ namespace SoftBodyDynamics.Runner
                     suiteResult.Rows.Add(r);
                     table.PrintRow(r);
                 }
+                if (suite is IScenarioSuiteSummary summary)
+                {
+                    var outcomes = suiteResult.Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics));
+                    suiteResult.Summary = summary.Summary(outcomes, options.Quick);
+                    Console.WriteLine();
+                    Console.WriteLine(suiteResult.Summary.TrimEnd());
+                }
                 results.Add(suiteResult);
             }
 
@@ -83,6 +90,8 @@ namespace SoftBodyDynamics.Runner
     {
         public readonly IScenarioSuite Suite;
         public readonly List<ScenarioResult> Rows = new List<ScenarioResult>();
+        /// <summary>Markdown the suite wrote about all its rows (<see cref="IScenarioSuiteSummary"/>), or null.</summary>
+        public string Summary;
         public SuiteResult(IScenarioSuite suite) { Suite = suite; }
     }
 

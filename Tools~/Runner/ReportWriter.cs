@@ -6,6 +6,7 @@ using System.IO;
 using System.Linq;
 using System.Runtime.InteropServices;
 using System.Text;
+using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
@@ -43,13 +44,16 @@ namespace SoftBodyDynamics.Runner
                 foreach (ScenarioResult r in s.Rows)
                 {
                     md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {Format.Rate(r.ItemsPerSecond)} |");
-                    foreach (string n in metricNames) md.Append($" {Format.Value(r.MetricValue(n))} |");
+                    // A metric the row does not report (NaN) is an empty cell, not "NaN".
+                    foreach (string n in metricNames) md.Append(double.IsNaN(r.MetricValue(n)) ? " – |" : $" {Format.Value(r.MetricValue(n))} |");
                     md.AppendLine();
                     foreach (var m in r.Metrics)
                         csv.AppendLine(string.Join(",", s.Suite.Name, r.Name, Quote(r.Method), r.Size, r.SizeUnit,
                             F(r.MedianMs), F(r.MinMs), F(r.MaxMs), F(r.NsPerItem), F(r.ItemsPerSecond), Quote(m.Name), F(m.Value)));
                 }
                 md.AppendLine();
+                if (!string.IsNullOrEmpty(s.Summary))
+                    md.AppendLine(s.Summary.TrimEnd()).AppendLine();
                 foreach (ScenarioResult r in s.Rows.Where(r => r.AllocatedBytesPerStep > 0))
                     md.AppendLine($"- **Warning:** `{r.Method}` (N = {r.Size}) allocated {r.AllocatedBytesPerStep:F0} bytes per Step.");
                 if (s.Rows.Any(r => r.AllocatedBytesPerStep > 0))
@@ -58,9 +62,10 @@ namespace SoftBodyDynamics.Runner
                 if (gnuplot)
                 {
                     string pareto = PlotAccuracyVersusCost(dir, s);
+                    string cost = s.Suite is IScenarioSuiteFigure figure ? figure.CostLabel : "ns per item";
                     if (pareto != null)
-                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against ns per item]({pareto})").AppendLine()
-                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against time per item (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
+                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against {cost}]({pareto})").AppendLine()
+                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against {cost} (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
                     string scaling = PlotScaling(dir, s);
                     if (scaling != null)
                         md.AppendLine($"![{s.Suite.Name}: time per item against size]({scaling})").AppendLine()
@@ -86,30 +91,45 @@ namespace SoftBodyDynamics.Runner
             var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
-            // One series per method family (the text before the first comma), labelled by the rest.
-            var families = rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
+            var figure = s.Suite as IScenarioSuiteFigure;
+            ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics);
+            // One series per method family (the text before the first comma, or the suite's own series), labelled by the rest.
+            var families = figure != null
+                ? rows.GroupBy(r => figure.Series(Outcome(r))).ToList()
+                : rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
+            double Cost(ScenarioResult r) => figure != null ? figure.Cost(Outcome(r)) : r.NsPerItem;
             var dat = new StringBuilder();
             var plots = new List<string>();
             int index = 0;
             foreach (var f in families)
             {
-                foreach (var r in f.OrderBy(r => r.NsPerItem))
+                // A suite with its own figure plots one point per label in a series (rows that ran the same setting, such
+                // as requested substep counts below what the step needs, would repeat it); the first row in suite order stays.
+                var ordered = (figure != null
+                    ? f.GroupBy(r => figure.PointLabel(Outcome(r))).Select(g => g.First())
+                    : f).OrderBy(Cost).ToList();
+                for (int k = 0; k < ordered.Count; k++)
                 {
-                    string rest = r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() : "";
-                    dat.AppendLine($"{F(r.NsPerItem)} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest} N={r.Size}\"");
+                    ScenarioResult r = ordered[k];
+                    string rest = figure != null
+                        ? (k == 0 || k == ordered.Count - 1 ? figure.PointLabel(Outcome(r)) : "")
+                        : r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() + $" N={r.Size}" : $"N={r.Size}";
+                    dat.AppendLine($"{F(Cost(r))} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest.Replace("\"", "")}\"");
                 }
                 dat.AppendLine().AppendLine();
                 // Explicit line type per family: the label plots would otherwise use up the colour cycle.
                 string style = $"lt {index + 1} pt {k_PointTypes[index % k_PointTypes.Length]}";
-                plots.Add($"'{name}.dat' index {index} using 1:2 with points {style} ps 1.3 title '{f.Key.Replace("'", "")}'");
+                string with = figure != null ? "linespoints" : "points";
+                plots.Add($"'{name}.dat' index {index} using 1:2 with {with} {style} ps 1.3 title '{f.Key.Replace("'", "")}'");
                 plots.Add($"'{name}.dat' index {index} using 1:2:3 with labels offset 0.8,0.5 left rotate by 20 font ',7' tc lt {index + 1} notitle");
                 index++;
             }
+            string costLabel = figure != null ? figure.CostLabel : $"ns per item, median ({rows[0].SizeUnit})";
             File.WriteAllText(Path.Combine(dir, name + ".dat"), dat.ToString());
             string gp = $@"set terminal pngcairo size 960,600 font ',10'
 set output '{name}.png'
 set title '{s.Suite.Name}: accuracy against cost'
-set xlabel 'ns per item, median ({rows[0].SizeUnit})'
+set xlabel '{costLabel.Replace("'", "")}'
 set ylabel '{metric}'
 set logscale xy
 set format y '%.0e'

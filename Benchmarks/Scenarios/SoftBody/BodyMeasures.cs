@@ -129,6 +129,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public double this[int i] => i == 0 ? X : i == 1 ? Y : Z;
         public double LengthSquared => X * X + Y * Y + Z * Z;
         public double Length => Math.Sqrt(LengthSquared);
+        public static double Dot(Vector3d a, Vector3d b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+        public static Vector3d operator -(Vector3d a) => new Vector3d(-a.X, -a.Y, -a.Z);
         public static Vector3d Cross(Vector3d a, Vector3d b) =>
             new Vector3d(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
     }
