@@ -1,4 +1,5 @@
 using System;
+using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
@@ -7,7 +8,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// Float64 reference of the quadratic shape-matching goals of one cluster (Müller et al. 2005,
     /// eq. 11–12, with q̃ centred as the solver does), without the length scaling the float32 solver
     /// uses (scaling changes nothing in exact arithmetic): Ã = Ã_pq Ã_qq⁻¹ by Gaussian elimination with partial pivoting, R from the
-    /// float64 SVD, the dilation δ R removed from the linear block, gᵢ = c + (β Ã + (1 − β)[R 0 0]) q̃ᵢ.
+    /// float64 SVD, gᵢ = c + (β' Ã + (1 − β')[R 0 0]) q̃ᵢ − κ (J − 1) cof(A) (M L² A_qq⁻¹) qᵢ with β' = β·fade, κ = β'/9
+    /// and J = det A of the plain linear fit (the volume energy of the solver's quadratic mode). No strain limit.
     /// </summary>
     public static class QuadraticGoalsDouble
     {
@@ -61,23 +63,53 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int r = 0; r < 3; r++)
                 rhs[a, r] = apq[r, a];
             double[,] aT = Solve(aqq, rhs);
-            // Volume: δ R q̃ with δ = Σ wᵢ pᵢ·R qᵢ / Σ wᵢ |qᵢ|² − 1 is removed from the β part, as the solver does.
-            double pq = 0, qq = 0;
+            // β fade on the relative determinant of the linear block, as the solver does.
+            var t0 = new double[3, 3];
+            double maxAbs = 0;
+            for (int r = 0; r < 3; r++)
+            for (int a = 0; a < 3; a++)
+            {
+                t0[r, a] = aT[a, r];
+                maxAbs = Math.Max(maxAbs, Math.Abs(t0[r, a]));
+            }
+            double relativeDeterminant = maxAbs > 0 ? Det(t0) / (maxAbs * maxAbs * maxAbs) : 0;
+            double floor = VolumePreservation.DefaultRelativeDeterminantFloor;
+            double fade = Math.Min(1, Math.Max(0, (relativeDeterminant - floor) / (VolumePreservation.FadeEnd - floor)));
+            double betaFaded = beta * fade;
+            // Volume energy ½ω²κML²(J − 1)², J = det A of the plain linear fit A = A_pq A_qq⁻¹, κ = β·fade/9: the goal
+            // of particle i moves by −κ (J − 1) cof(A) (M L² A_qq⁻¹) qᵢ, as the solver does.
+            var apqL = new double[3, 3];
+            var aqqL = new double[3, 3];
+            double ml2 = 0;
             for (int i = 0; i < n; i++)
             {
-                double px = x[i].x - cx, py = x[i].y - cy, pz = x[i].z - cz;
-                double qx = rest[i].x - rx, qy = rest[i].y - ry, qz = rest[i].z - rz;
+                double[] q = { rest[i].x - rx, rest[i].y - ry, rest[i].z - rz };
+                double[] p = { x[i].x - cx, x[i].y - cy, x[i].z - cz };
                 for (int r = 0; r < 3; r++)
+                for (int a = 0; a < 3; a++)
                 {
-                    double rq = rot[r, 0] * qx + rot[r, 1] * qy + rot[r, 2] * qz;
-                    pq += w[i] * (r == 0 ? px : r == 1 ? py : pz) * rq;
+                    apqL[r, a] += w[i] * p[r] * q[a];
+                    aqqL[r, a] += w[i] * q[r] * q[a];
                 }
-                qq += w[i] * (qx * qx + qy * qy + qz * qz);
+                ml2 += w[i] * (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
             }
-            double dilation = pq / qq - 1.0;
-            for (int a = 0; a < 3; a++)
-            for (int r = 0; r < 3; r++)
-                aT[a, r] -= dilation * rot[r, a];
+            double[,] aqqInv = Inverse(aqqL);
+            double[,] aLin = Mul(apqL, aqqInv);
+            double j = Det(aLin);
+            double[,] volume = new double[3, 3];
+            if (relativeDeterminant > floor)
+            {
+                double[,] aInv = Inverse(aLin);
+                var cof = new double[3, 3];
+                for (int r = 0; r < 3; r++)
+                for (int a = 0; a < 3; a++)
+                    cof[r, a] = j * aInv[a, r];
+                double[,] k = Mul(cof, aqqInv);
+                double scale = -(betaFaded / 9.0) * (j - 1.0) * ml2;
+                for (int r = 0; r < 3; r++)
+                for (int a = 0; a < 3; a++)
+                    volume[r, a] = scale * k[r, a];
+            }
             var result = new double[n, 3];
             for (int i = 0; i < n; i++)
             for (int r = 0; r < 3; r++)
@@ -86,11 +118,45 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int a = 0; a < 9; a++)
                 {
                     double rigid = a < 3 ? rot[r, a] : 0.0;
-                    g += (beta * aT[a, r] + (1 - beta) * rigid) * qt[i, a];
+                    g += (betaFaded * aT[a, r] + (1 - betaFaded) * rigid) * qt[i, a];
                 }
+                double[] q = { rest[i].x - rx, rest[i].y - ry, rest[i].z - rz };
+                for (int a = 0; a < 3; a++)
+                    g += volume[r, a] * q[a];
                 result[i, r] = g + (r == 0 ? cx : r == 1 ? cy : cz);
             }
             return result;
+        }
+
+        static double Det(double[,] m) =>
+            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1])
+            - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
+            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
+
+        static double[,] Mul(double[,] a, double[,] b)
+        {
+            var c = new double[3, 3];
+            for (int r = 0; r < 3; r++)
+            for (int col = 0; col < 3; col++)
+            for (int k = 0; k < 3; k++)
+                c[r, col] += a[r, k] * b[k, col];
+            return c;
+        }
+
+        static double[,] Inverse(double[,] m)
+        {
+            double d = Det(m);
+            var inv = new double[3, 3];
+            inv[0, 0] = (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1]) / d;
+            inv[0, 1] = (m[0, 2] * m[2, 1] - m[0, 1] * m[2, 2]) / d;
+            inv[0, 2] = (m[0, 1] * m[1, 2] - m[0, 2] * m[1, 1]) / d;
+            inv[1, 0] = (m[1, 2] * m[2, 0] - m[1, 0] * m[2, 2]) / d;
+            inv[1, 1] = (m[0, 0] * m[2, 2] - m[0, 2] * m[2, 0]) / d;
+            inv[1, 2] = (m[0, 2] * m[1, 0] - m[0, 0] * m[1, 2]) / d;
+            inv[2, 0] = (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]) / d;
+            inv[2, 1] = (m[0, 1] * m[2, 0] - m[0, 0] * m[2, 1]) / d;
+            inv[2, 2] = (m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) / d;
+            return inv;
         }
 
         static double[,] Solve(double[,] a, double[,] b)

@@ -31,14 +31,16 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(model.ClusterRest[0].QuadraticValid, Is.True);
             Assert.That(condition, Is.LessThanOrEqualTo(1e3), "cond(Ã_qq) after scaling");
 
-            // A bent, twisted and rotated copy of the rest shape, plus noise the quadratic fit cannot follow.
+            // A bent, stretched (volume × 1.188, so the volume term acts), twisted and rotated copy of the rest shape, plus
+            // noise the quadratic fit cannot follow.
             var rng = new Unity.Mathematics.Random(5u);
             var x = new float3[model.ParticleCount];
             quaternion rot = quaternion.AxisAngle(math.normalize(new float3(1f, 2f, 3f)), 0.7f);
             for (int i = 0; i < x.Length; i++)
             {
                 float3 q = model.RestPositions[i] / size;
-                float3 bent = q + new float3(0.3f * q.y * q.y, 0.2f * q.x * q.z, -0.25f * q.x * q.x) + (rng.NextFloat3() - 0.5f) * 0.02f;
+                float3 bent = new float3(1.2f, 0.9f, 1.1f) * q + new float3(0.3f * q.y * q.y, 0.2f * q.x * q.z, -0.25f * q.x * q.x)
+                              + (rng.NextFloat3() - 0.5f) * 0.02f;
                 x[i] = new float3(3f, -1f, 2f) * size + size * math.mul(rot, bent);
             }
             foreach (float beta in new[] { 0f, 0.5f, 1f })
