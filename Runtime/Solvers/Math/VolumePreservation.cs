@@ -28,12 +28,10 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Relative determinant (det of A over its largest entry cubed) from which a goal follows the full β. Below
-        /// it the β part fades linearly to zero at <see cref="DefaultRelativeDeterminantFloor"/>, so a cluster
-        /// squashed nearly flat (one axis below about a twentieth of the others) or turned inside out gets rigid goals
-        /// that unfold it. A goal that followed the flat shape instead, with its strain limited, holds a body with
-        /// β near 1 flat indefinitely.
+        /// it the β part fades linearly to zero at <see cref="DefaultRelativeDeterminantFloor"/>, so the fallback to
+        /// rigid goals of a flat, collapsed or inverted cluster is continuous. Shared by the linear and quadratic modes.
         /// </summary>
-        public const float FadeEnd = 0.05f;
+        public const float FadeEnd = 10f * DefaultRelativeDeterminantFloor;
 
         /// <summary>Weight (0 to 1) of the β part for relative determinant <paramref name="relativeDeterminant"/>.</summary>
         public static float BetaFade(float relativeDeterminant) =>
@@ -52,19 +50,27 @@ namespace SoftBodyDynamics.Solvers
             float relativeDeterminantFloor = DefaultRelativeDeterminantFloor)
         {
             normalized = float3x3.identity;
-            relativeDeterminant = 0f;
-            if (!Finite.All(a))
-                return false;
-            float scale = Matrix3.MaxAbs(a);
-            if (!(scale > 0f))
-                return false;
-            // Normalise first so det cannot under- or overflow in float32.
-            float3x3 an = a * (1f / scale);
-            relativeDeterminant = math.determinant(an);
+            relativeDeterminant = RelativeDeterminant(a, out float3x3 an);
             if (!(relativeDeterminant > relativeDeterminantFloor)) // also rejects NaN
                 return false;
             normalized = an * (1f / math.pow(relativeDeterminant, 1f / 3f));
             return true;
+        }
+
+        /// <summary>det(A / max|Aᵢⱼ|), the determinant relative to A's scale; 0 for a zero or non-finite A.</summary>
+        public static float RelativeDeterminant(in float3x3 a) => RelativeDeterminant(a, out _);
+
+        static float RelativeDeterminant(in float3x3 a, out float3x3 scaled)
+        {
+            scaled = float3x3.identity;
+            if (!Finite.All(a))
+                return 0f;
+            float scale = Matrix3.MaxAbs(a);
+            if (!(scale > 0f))
+                return 0f;
+            // Normalise first so det cannot under- or overflow in float32.
+            scaled = a * (1f / scale);
+            return math.determinant(scaled);
         }
 
         /// <summary>

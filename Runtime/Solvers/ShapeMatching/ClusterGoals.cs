@@ -147,7 +147,7 @@ namespace SoftBodyDynamics.Solvers
             // A flat, collapsed or inverted linear block (det Ã₀ at or below the linear mode's floor) must not be
             // followed: the β part fades out toward the floor and the goals become rigid, as in the linear mode.
             const float floor = VolumePreservation.DefaultRelativeDeterminantFloor;
-            VolumePreservation.TryNormalize(t0, out _, out float relativeDeterminant, floor);
+            float relativeDeterminant = VolumePreservation.RelativeDeterminant(t0);
             float fade = VolumePreservation.BetaFade(relativeDeterminant);
             if (fade < 1f)
                 counters.Fallbacks++;
