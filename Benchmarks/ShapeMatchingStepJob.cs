@@ -27,9 +27,9 @@ namespace SoftBodyDynamics.Benchmarks
         [ReadOnly] public NativeArray<ColliderShape> Colliders;
         /// <summary>Step length (s).</summary>
         public float DeltaTime;
-        /// <summary>Particle positions (m, world).</summary>
+        /// <summary>Particle positions (m, relative to the status's origin).</summary>
         public NativeArray<float3> Positions;
-        /// <summary>Particle velocities (m/s, world).</summary>
+        /// <summary>Particle velocities (m/s).</summary>
         public NativeArray<float3> Velocities;
         /// <summary>Per-cluster state.</summary>
         public NativeArray<ClusterState> Clusters;
@@ -40,16 +40,14 @@ namespace SoftBodyDynamics.Benchmarks
         /// <summary>The report of the last step, one element.</summary>
         public NativeArray<ShapeMatchingStepReport> Report;
 
-        /// <summary>Scratch float3s per particle the step needs.</summary>
-        public const int ScratchPerParticle = 3;
+        /// <summary>Scratch float3s per particle the step needs (<see cref="ShapeMatchingState.ScratchPerParticle"/>).</summary>
+        public const int ScratchPerParticle = ShapeMatchingState.ScratchPerParticle;
 
         public void Execute()
         {
             ref SoftBodyShapeBlob shape = ref Shape.Value;
-            int n = shape.ParticleCount;
-            Span<float3> scratch = Scratch.AsSpan();
-            var state = new ShapeMatchingState(Positions.AsSpan(), Velocities.AsSpan(), Clusters.AsSpan(), default,
-                scratch.Slice(0, n), scratch.Slice(n, n), scratch.Slice(2 * n, n));
+            var state = ShapeMatchingState.FromScratch(Positions.AsSpan(), Velocities.AsSpan(), Clusters.AsSpan(), default,
+                Scratch.AsSpan());
             SoftBodyStatus status = Status[0];
             Report[0] = ShapeMatchingSolver.Step(shape.AsModel(), Parameters, Colliders.AsReadOnlySpan(), DeltaTime, state, ref status);
             Status[0] = status;

@@ -1,4 +1,5 @@
 using Unity.Entities;
+using Unity.Mathematics;
 using UnityEngine;
 
 namespace SoftBodyDynamics.Authoring
@@ -18,20 +19,15 @@ namespace SoftBodyDynamics.Authoring
         [Range(1, 64)]
         public int minSubsteps = SoftBodyWorldSettings.Default.MinSubsteps;
 
+        /// <summary>True when <see cref="gravity"/> is finite.</summary>
+        public bool GravityIsFinite => math.all(math.isfinite(UnityMathConversions.ToFloat3(gravity)));
+
         /// <summary>The singleton's value, with the substeps clamped to 1–64 and a non-finite gravity replaced by the default.</summary>
-        public SoftBodyWorldSettings Settings
+        public SoftBodyWorldSettings Settings => new SoftBodyWorldSettings
         {
-            get
-            {
-                var g = UnityMathConversions.ToFloat3(gravity);
-                bool finite = Unity.Mathematics.math.all(Unity.Mathematics.math.isfinite(g));
-                return new SoftBodyWorldSettings
-                {
-                    Gravity = finite ? g : SoftBodyWorldSettings.Default.Gravity,
-                    MinSubsteps = Unity.Mathematics.math.clamp(minSubsteps, 1, 64),
-                };
-            }
-        }
+            Gravity = GravityIsFinite ? UnityMathConversions.ToFloat3(gravity) : SoftBodyWorldSettings.Default.Gravity,
+            MinSubsteps = math.clamp(minSubsteps, 1, 64),
+        };
     }
 
     /// <summary>Bakes <see cref="SoftBodyWorldAuthoring"/> into the <see cref="SoftBodyWorldSettings"/> singleton.</summary>
@@ -39,8 +35,7 @@ namespace SoftBodyDynamics.Authoring
     {
         public override void Bake(SoftBodyWorldAuthoring authoring)
         {
-            var g = UnityMathConversions.ToFloat3(authoring.gravity);
-            if (!Unity.Mathematics.math.all(Unity.Mathematics.math.isfinite(g)))
+            if (!authoring.GravityIsFinite)
                 Debug.LogError($"Soft Body World on '{authoring.name}': Gravity is not finite; the default (0, −9.81, 0) is used.", authoring);
             Entity entity = GetEntity(TransformUsageFlags.None);
             AddComponent(entity, authoring.Settings);

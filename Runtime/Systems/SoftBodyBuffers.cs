@@ -9,8 +9,8 @@ namespace SoftBodyDynamics
     /// <summary>Span views of a body's buffers and scratch, as the solver takes them (no copies).</summary>
     static class SoftBodyBuffers
     {
-        /// <summary>Scratch float3s per particle the step needs: predicted positions, goals, contact normals.</summary>
-        public const int ScratchPerParticle = 3;
+        /// <summary>Scratch float3s per particle the step needs (<see cref="ShapeMatchingState.ScratchPerParticle"/>).</summary>
+        public const int ScratchPerParticle = ShapeMatchingState.ScratchPerParticle;
 
         public static Span<float3> AsSpan(DynamicBuffer<SoftBodyPosition> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
 
@@ -26,11 +26,6 @@ namespace SoftBodyDynamics
         /// </summary>
         public static ShapeMatchingState State(DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
             DynamicBuffer<SoftBodyCluster> clusters, Span<float3x3> quadraticInverse, NativeArray<float3> scratch)
-        {
-            int n = positions.Length;
-            Span<float3> s = scratch.AsSpan();
-            return new ShapeMatchingState(AsSpan(positions), AsSpan(velocities), AsSpan(clusters), quadraticInverse,
-                s.Slice(0, n), s.Slice(n, n), s.Slice(2 * n, n));
-        }
+            => ShapeMatchingState.FromScratch(AsSpan(positions), AsSpan(velocities), AsSpan(clusters), quadraticInverse, scratch.AsSpan());
     }
 }

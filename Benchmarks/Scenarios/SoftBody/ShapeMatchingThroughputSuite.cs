@@ -15,7 +15,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Description =>
             "One 1 m cube of 10³ = 1000, 22³ = 10648 or 46³ = 97336 particles (quick run: 1000 only) settling on a floor plane " +
-            "under gravity, advanced by one 1/60 s step of 4 substeps (α = 0.2, β = 0.5, damping 1/s, friction 0.5, no sleeping); " +
+            "under gravity, advanced by one 1/60 s step of exactly 4 substeps (9 Hz, ζ = 0.13, β = 0.5, friction 0.5, no sleeping); " +
             "the body starts at rest touching the floor and is put back there every 60 steps, so every timed step is one of the " +
             "first second of settling. " +
             "One item is one particle-iteration (a particle through one substep: predict, cluster solve, floor contact, update), " +

@@ -13,9 +13,10 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Adds the internal forces of one substep to the velocities, given the positions xᵢ at the substep's start:
         /// vᵢ += Δvᵢ. Internal forces change neither momentum nor angular momentum. <paramref name="lastSubstep"/>
-        /// marks the substep where once-per-step work (plastic flow) happens. May use <see cref="ParticleBody.Scratch"/>.
+        /// marks the substep where once-per-step work (plastic flow) happens. <paramref name="frame"/> is the rigid frame of
+        /// the positions (mass, centre, inverse inertia), shared with the damping. May use <see cref="ParticleBody.Scratch"/>.
         /// </summary>
-        void Solve(in ParticleBody body, in ParticleStepConstants constants, bool lastSubstep);
+        void Solve(in ParticleBody body, in ParticleStepConstants constants, in RigidFrame frame, bool lastSubstep);
 
         /// <summary>The guard reset the particles to the rest shape at <paramref name="rotation"/>: reset what of the stage's state no longer fits.</summary>
         void OnReset(quaternion rotation);

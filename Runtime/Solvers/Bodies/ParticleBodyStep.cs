@@ -71,14 +71,15 @@ namespace SoftBodyDynamics.Solvers
             var predicted = body.Predicted;
             for (int s = 0; s < constants.Substeps; s++)
             {
-                // Predict (velocities).
+                // Predict (velocities). The positions' rigid frame serves the damping and the solve alike.
+                RigidFrame frame = RigidFrame.Of(x, body.Masses);
                 if (velocityLoss > 0f)
-                    RigidMotionDamping.Apply(x, v, body.Masses, velocityLoss, body.Scratch);
+                    RigidMotionDamping.Apply(x, v, body.Masses, velocityLoss, body.Scratch, frame);
                 float3 dv = h * constants.Gravity;
                 for (int i = 0; i < x.Length; i++)
                     v[i] += dv;
                 // Solve.
-                stage.Solve(body, constants, s == constants.Substeps - 1);
+                stage.Solve(body, constants, frame, s == constants.Substeps - 1);
                 // Predict (positions).
                 for (int i = 0; i < x.Length; i++)
                     predicted[i] = x[i] + h * v[i];

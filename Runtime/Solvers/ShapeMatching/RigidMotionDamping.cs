@@ -35,23 +35,24 @@ namespace SoftBodyDynamics.Solvers
 
         /// <param name="k">Fraction of the non-rigid velocity removed, in [0, 1].</param>
         /// <param name="scratch">One float3 per particle.</param>
-        public static void Apply(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float k, Span<float3> scratch)
+        public static void Apply(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float k, Span<float3> scratch) =>
+            Apply(x, v, mass, k, scratch, RigidFrame.Of(x, mass));
+
+        /// <summary>As above, with the positions' <see cref="RigidFrame"/> already computed.</summary>
+        public static void Apply(ReadOnlySpan<float3> x, Span<float3> v, ReadOnlySpan<float> mass, float k, Span<float3> scratch,
+            in RigidFrame frame)
         {
-            float m = 0f;
-            float3 xSum = float3.zero, vSum = float3.zero;
-            for (int i = 0; i < x.Length; i++)
-            {
-                m += mass[i];
-                xSum += mass[i] * x[i];
-                vSum += mass[i] * v[i];
-            }
+            float m = frame.Mass;
             if (!(m > 0f))
                 return;
-            float3 xcm = xSum / m, vcm = vSum / m;
+            float3 vSum = float3.zero;
+            for (int i = 0; i < x.Length; i++)
+                vSum += mass[i] * v[i];
+            float3 xcm = frame.Center, vcm = vSum / m;
             float3 l = float3.zero;
             for (int i = 0; i < x.Length; i++)
                 l += mass[i] * math.cross(x[i] - xcm, v[i] - vcm);
-            float3 omega = math.mul(InverseInertia(x, mass, xcm), l);
+            float3 omega = math.mul(frame.InverseInertia, l);
             if (!math.all(math.isfinite(omega)))
                 omega = float3.zero;
             // Σ mᵢ Δvᵢ is zero in exact arithmetic; its float32 residual is removed so damping never

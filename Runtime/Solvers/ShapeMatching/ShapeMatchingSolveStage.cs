@@ -76,7 +76,7 @@ namespace SoftBodyDynamics.Solvers
         Span<float3x3> StateQuadratic => new Span<float3x3>(m_StateQuadratic, m_StateQuadraticLength);
 
         /// <inheritdoc/>
-        public void Solve(in ParticleBody body, in ParticleStepConstants constants, bool lastSubstep)
+        public void Solve(in ParticleBody body, in ParticleStepConstants constants, in RigidFrame frame, bool lastSubstep)
         {
             ShapeMatchingModel model = Model;
             var state = new ShapeMatchingState(body.Positions, body.Velocities, Clusters, StateQuadratic, body.Predicted,
@@ -84,7 +84,7 @@ namespace SoftBodyDynamics.Solvers
             // Goals of the positions xᵢ; plastic flow once per step, on its last substep.
             ClusterGoals.Counters counters = ClusterGoals.Compute(model, m_Parameters, state, body.Positions,
                 lastSubstep ? constants.Dt : 0f);
-            PullTowardGoals(model, body, constants.Pull, constants.H);
+            PullTowardGoals(model, body, frame, constants.Pull, constants.H);
             MaxRotationIterations = math.max(MaxRotationIterations, counters.MaxIterations);
             PlasticUpdates += counters.PlasticUpdates;
             Fallbacks = counters.Fallbacks;
@@ -127,7 +127,7 @@ namespace SoftBodyDynamics.Solvers
         /// </list>
         /// The goals are in <see cref="ParticleBody.Scratch"/> on entry (<see cref="ClusterGoals.Compute"/>).
         /// </summary>
-        static void PullTowardGoals(in ShapeMatchingModel model, in ParticleBody body, float alpha, float h)
+        static void PullTowardGoals(in ShapeMatchingModel model, in ParticleBody body, in RigidFrame frame, float alpha, float h)
         {
             var x = body.Positions;
             var v = body.Velocities;
@@ -145,14 +145,14 @@ namespace SoftBodyDynamics.Solvers
             if (!(mass > 0f) || !(alpha > 0f))
                 return;
             drift /= mass;
-            float3 xcm = ShapeMatching.CenterOfMass(x, model.Masses);
+            float3 xcm = frame.Center;
             float3 torque = float3.zero;
             for (int i = 0; i < x.Length; i++)
             {
                 delta[i] = model.InverseClusterCounts[i] > 0f ? alpha * (delta[i] - drift) : float3.zero;
                 torque += model.Masses[i] * math.cross(x[i] - xcm, delta[i]);
             }
-            float3 spin = math.mul(RigidMotionDamping.InverseInertia(x, model.Masses, xcm), torque);
+            float3 spin = math.mul(frame.InverseInertia, torque);
             if (!math.all(math.isfinite(spin)))
                 spin = float3.zero;
             float invH = 1f / h;

@@ -29,6 +29,21 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Scratch: contact normal of each particle in the substep (zero = no contact).</summary>
         public readonly Span<float3> ContactNormals;
 
+        /// <summary>Scratch float3s per particle the step needs: predicted positions, goals, contact normals.</summary>
+        public const int ScratchPerParticle = 3;
+
+        /// <summary>
+        /// The state over its buffers and one scratch span of <see cref="ScratchPerParticle"/> × particles, split into
+        /// predicted positions, goals and contact normals (the layout the ECS job and the Burst benchmark share).
+        /// </summary>
+        public static ShapeMatchingState FromScratch(Span<float3> positions, Span<float3> velocities, Span<ClusterState> clusters,
+            Span<float3x3> quadraticInverse, Span<float3> scratch)
+        {
+            int n = positions.Length;
+            return new ShapeMatchingState(positions, velocities, clusters, quadraticInverse,
+                scratch.Slice(0, n), scratch.Slice(n, n), scratch.Slice(2 * n, n));
+        }
+
         public ShapeMatchingState(Span<float3> positions, Span<float3> velocities, Span<ClusterState> clusters,
             Span<float3x3> quadraticInverse, Span<float3> predicted, Span<float3> goals, Span<float3> contactNormals)
         {

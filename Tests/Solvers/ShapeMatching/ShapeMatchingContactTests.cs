@@ -127,7 +127,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// <summary>
         /// On a 30° slope (tan 30° ≈ 0.58) a body with μ = 1 holds, one with μ = 0 slides. Position-based
         /// friction cancels tangential motion up to μ × the penetration gravity causes each substep, so
-        /// the static limit is exactly tan θ &lt; μ. A stiff body (rigid goals, α = 1) keeps the test about
+        /// the static limit is exactly tan θ &lt; μ. A stiff body (rigid goals, 30 Hz, critically damped) keeps the test about
         /// friction: a soft jelly shears under its weight and tumbles down even where it cannot slide.
         /// </summary>
         [Test]
