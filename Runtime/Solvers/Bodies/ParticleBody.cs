@@ -16,6 +16,12 @@ namespace SoftBodyDynamics.Solvers
         public readonly float3 RestCenter;
         /// <summary>Particle masses mᵢ (kg), all &gt; 0.</summary>
         public readonly ReadOnlySpan<float> Masses;
+        /// <summary>
+        /// Inverse masses wᵢ = 1/mᵢ (1/kg), 0 for a pinned particle: the step keeps a pinned particle where it is
+        /// (its velocity stays zero) and solve stages treat it as infinitely heavy. Empty = no particle is pinned
+        /// (the stages then use 1/<see cref="Masses"/>).
+        /// </summary>
+        public readonly ReadOnlySpan<float> InverseMasses;
         /// <summary>Positions xᵢ relative to the body's origin (m).</summary>
         public readonly Span<float3> Positions;
         /// <summary>Velocities vᵢ (m/s).</summary>
@@ -29,7 +35,15 @@ namespace SoftBodyDynamics.Solvers
 
         public ParticleBody(ReadOnlySpan<float3> restPositions, float3 restCenter, ReadOnlySpan<float> masses,
             Span<float3> positions, Span<float3> velocities, Span<float3> predicted, Span<float3> scratch, Span<float3> contactNormals)
+            : this(restPositions, restCenter, masses, default, positions, velocities, predicted, scratch, contactNormals)
         {
+        }
+
+        /// <param name="inverseMasses">wᵢ, 0 for pinned particles; empty when none is pinned.</param>
+        public ParticleBody(ReadOnlySpan<float3> restPositions, float3 restCenter, ReadOnlySpan<float> masses, ReadOnlySpan<float> inverseMasses,
+            Span<float3> positions, Span<float3> velocities, Span<float3> predicted, Span<float3> scratch, Span<float3> contactNormals)
+        {
+            InverseMasses = inverseMasses;
             RestPositions = restPositions;
             RestCenter = restCenter;
             Masses = masses;
@@ -41,5 +55,11 @@ namespace SoftBodyDynamics.Solvers
         }
 
         public int ParticleCount => Positions.Length;
+
+        /// <summary>True when some particles are pinned (<see cref="InverseMasses"/> given).</summary>
+        public bool HasPins => InverseMasses.Length == Positions.Length && Positions.Length > 0;
+
+        /// <summary>wᵢ: 0 for a pinned particle, else 1/mᵢ.</summary>
+        public float InverseMass(int i) => HasPins ? InverseMasses[i] : 1f / Masses[i];
     }
 }

@@ -80,6 +80,8 @@ namespace SoftBodyDynamics.Solvers
                     v[i] += dv;
                 // Solve.
                 stage.Solve(body, constants, frame, s == constants.Substeps - 1);
+                if (body.HasPins)
+                    HoldPinned(body.InverseMasses, v);
                 // Predict (positions).
                 for (int i = 0; i < x.Length; i++)
                     predicted[i] = x[i] + h * v[i];
@@ -87,6 +89,8 @@ namespace SoftBodyDynamics.Solvers
                 report.Contacts = colliders.Length > 0
                     ? ContactProjection.Project(x, predicted, v, body.ContactNormals, colliders, contact, h)
                     : ClearContacts(body.ContactNormals);
+                if (body.HasPins && colliders.Length > 0)
+                    HoldPinned(body.InverseMasses, x, predicted, v);
                 predicted.CopyTo(x);
             }
 
@@ -240,6 +244,25 @@ namespace SoftBodyDynamics.Solvers
                         return true;
             }
             return false;
+        }
+
+        /// <summary>Pinned particles (wᵢ = 0) do not move: their velocity is zero whatever gravity and the stage added.</summary>
+        static void HoldPinned(ReadOnlySpan<float> inverseMass, Span<float3> v)
+        {
+            for (int i = 0; i < v.Length; i++)
+                if (inverseMass[i] == 0f)
+                    v[i] = float3.zero;
+        }
+
+        /// <summary>A collider does not push a pinned particle either.</summary>
+        static void HoldPinned(ReadOnlySpan<float> inverseMass, ReadOnlySpan<float3> x, Span<float3> predicted, Span<float3> v)
+        {
+            for (int i = 0; i < v.Length; i++)
+                if (inverseMass[i] == 0f)
+                {
+                    predicted[i] = x[i];
+                    v[i] = float3.zero;
+                }
         }
 
         static int ClearContacts(Span<float3> normals)

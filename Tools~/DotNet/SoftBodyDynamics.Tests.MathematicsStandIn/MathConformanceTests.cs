@@ -152,5 +152,20 @@ namespace SoftBodyDynamics.Tests.MathematicsStandIn
             v.yzx = new float3(4f, 5f, 6f);
             Assert.That(v, Is.EqualTo(new float3(6f, 4f, 5f)));
         }
+
+        [Test]
+        public void IntegerVectorIndexers_ReadAndWriteTheFieldsInOrder_AndRejectOutOfRange()
+        {
+            var a = new int4(10, 20, 30, 40);
+            Assert.That(new[] { a[0], a[1], a[2], a[3] }, Is.EqualTo(new[] { 10, 20, 30, 40 }));
+            a[2] = -7;
+            Assert.That(a.z, Is.EqualTo(-7), "the setter writes the field of that index");
+            Assert.Throws<ArgumentException>(() => { int _ = a[4]; });
+            Assert.Throws<ArgumentException>(() => { int _ = a[-1]; });
+            var b = new int2(5, 6);
+            b[1] = 9;
+            Assert.That(new[] { b[0], b[1], b.y }, Is.EqualTo(new[] { 5, 9, 9 }));
+            Assert.Throws<ArgumentException>(() => { int _ = b[2]; });
+        }
     }
 }

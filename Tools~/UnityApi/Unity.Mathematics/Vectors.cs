@@ -125,6 +125,62 @@ namespace Unity.Mathematics
         public override string ToString() => $"int3({x}, {y}, {z})";
     }
 
+    /// <summary>https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.int2.html</summary>
+    [Serializable]
+    public partial struct int2
+    {
+        public int x, y;
+        public int2(int x, int y) { this.x = x; this.y = y; }
+
+        /// <summary>
+        /// The element at <paramref name="index"/>, by value with a setter, as in Unity.Mathematics 1.3.2.
+        /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.int2.Item.html
+        /// </summary>
+        public unsafe int this[int index]
+        {
+            get
+            {
+                if ((uint)index >= 2) throw new ArgumentException("index must be between[0...1]");
+                fixed (int2* array = &this) { return ((int*)array)[index]; }
+            }
+            set
+            {
+                if ((uint)index >= 2) throw new ArgumentException("index must be between[0...1]");
+                fixed (int* array = &x) { array[index] = value; }
+            }
+        }
+
+        public override string ToString() => $"int2({x}, {y})";
+    }
+
+    /// <summary>https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.int4.html</summary>
+    [Serializable]
+    public partial struct int4
+    {
+        public int x, y, z, w;
+        public int4(int x, int y, int z, int w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+
+        /// <summary>
+        /// The element at <paramref name="index"/>, by value with a setter, as in Unity.Mathematics 1.3.2.
+        /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.int4.Item.html
+        /// </summary>
+        public unsafe int this[int index]
+        {
+            get
+            {
+                if ((uint)index >= 4) throw new ArgumentException("index must be between[0...3]");
+                fixed (int4* array = &this) { return ((int*)array)[index]; }
+            }
+            set
+            {
+                if ((uint)index >= 4) throw new ArgumentException("index must be between[0...3]");
+                fixed (int* array = &x) { array[index] = value; }
+            }
+        }
+
+        public override string ToString() => $"int4({x}, {y}, {z}, {w})";
+    }
+
     [Serializable]
     public partial struct bool3
     {
