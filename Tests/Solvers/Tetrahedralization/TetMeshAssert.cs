@@ -53,6 +53,14 @@ namespace SoftBodyDynamics.Tests.Solvers
                         faces[key] = (1, parity, t, q[f[3]]);
                 }
             }
+            var min = new float3[mesh.TetrahedronCount];
+            var max = new float3[mesh.TetrahedronCount];
+            for (int t = 0; t < mesh.TetrahedronCount; t++)
+            {
+                int4 q = mesh.Tetrahedra[t];
+                min[t] = math.min(math.min(mesh.Positions[q.x], mesh.Positions[q.y]), math.min(mesh.Positions[q.z], mesh.Positions[q.w]));
+                max[t] = math.max(math.max(mesh.Positions[q.x], mesh.Positions[q.y]), math.max(mesh.Positions[q.z], mesh.Positions[q.w]));
+            }
             int boundary = 0;
             foreach (var pair in faces)
             {
@@ -69,6 +77,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 float3 probe = centroid + 1e-3f * longest * n;
                 for (int t = 0; t < mesh.TetrahedronCount; t++)
                 {
+                    if (math.any(probe < min[t]) || math.any(probe > max[t]))
+                        continue;
                     int4 q = mesh.Tetrahedra[t];
                     TetrahedralEmbedding.Barycentric(probe, mesh.Positions[q.x], mesh.Positions[q.y], mesh.Positions[q.z], mesh.Positions[q.w],
                         out double l0, out double l1, out double l2, out double l3);
