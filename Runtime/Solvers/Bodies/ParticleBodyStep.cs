@@ -22,6 +22,8 @@ namespace SoftBodyDynamics.Solvers
     /// its last good placement and reports it; the placement (centre of mass, best-fit rotation) is updated and the
     /// origin the positions are relative to follows the body in whole metres beyond <see cref="RebaseDistance"/>, so a
     /// body 10 km from the world origin has the float32 resolution of one near it; a slow body falls asleep.
+    /// Pinned particles (<see cref="ParticleBody.InverseMasses"/> = 0) keep zero velocity through every substep: before
+    /// the solve, before the positions are predicted, and after the collide.
     /// The same function runs in the Burst jobs and in the .NET tests; it touches nothing but its arguments.
     /// </summary>
     public static class ParticleBodyStep
@@ -78,6 +80,9 @@ namespace SoftBodyDynamics.Solvers
                 float3 dv = h * constants.Gravity;
                 for (int i = 0; i < x.Length; i++)
                     v[i] += dv;
+                // The stage sees pinned particles at rest.
+                if (body.HasPins)
+                    HoldPinned(body.InverseMasses, v);
                 // Solve.
                 stage.Solve(body, constants, frame, s == constants.Substeps - 1);
                 if (body.HasPins)
