@@ -12,7 +12,7 @@ namespace SoftBodyDynamics
     /// <summary>
     /// Writes the deformed shape of every rendered soft body into its own mesh, once per frame. A Burst job
     /// per body computes mesh-space vertices, welded normals and bounds with <see cref="MeshDeformation"/> (shape
-    /// matching: one particle per welded vertex) or <see cref="EmbeddedMeshWriteBack"/> (mass-spring and FEM: render
+    /// matching: one particle per welded vertex) or <see cref="EmbeddedMeshDeformation"/> (mass-spring and FEM: render
     /// vertices embedded in tetrahedra, <see cref="SoftBodyEmbedding"/>) into <see cref="SoftBodyMeshVertex"/> and <c>RenderBounds</c> (bodies that have not stepped since
     /// the last write, e.g. sleeping ones, are skipped); then, on the main thread, each changed mesh gets
     /// its position/normal stream through <c>Mesh.SetVertexBufferData</c> and its bounds. Runs before
@@ -110,11 +110,17 @@ namespace SoftBodyDynamics
                 instance.Deformed = true;
                 instance.DeformedStep = body.Status.StepCount;
 
-                var scratch = new NativeArray<float3>(blob.WeldedCount, Allocator.Temp, NativeArrayOptions.UninitializedMemory);
-                AxisAlignedBox box = EmbeddedMeshWriteBack.Deform(positions.Reinterpret<float3>().AsNativeArray().AsReadOnlySpan(),
-                    blob.VerticesSpan, blob.VertexToWeldedSpan, blob.TrianglesSpan, body.Status.LocalCenter, body.Status.Rotation,
-                    blob.RestCenter, scratch.AsSpan(), vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan());
-                scratch.Dispose();
+                // Nodes into mesh space with the body's placement, Rᵀ(xᵢ − c) + x⁰_cm (as MeshDeformation places shape
+                // matching), then the shared embedded deformation (positions and Nanson normals).
+                int n = positions.Length;
+                var local = new NativeArray<float3>(n, Allocator.Temp, NativeArrayOptions.UninitializedMemory);
+                NativeArray<float3> x = positions.Reinterpret<float3>().AsNativeArray();
+                quaternion inverse = math.conjugate(math.normalizesafe(body.Status.Rotation));
+                for (int i = 0; i < n; i++)
+                    local[i] = math.rotate(inverse, x[i] - body.Status.LocalCenter) + blob.RestCenter;
+                AxisAlignedBox box = EmbeddedMeshDeformation.Deform(blob.VerticesSpan, blob.RestNodePositionsSpan, blob.RestNormalsSpan,
+                    local.AsReadOnlySpan(), vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan());
+                local.Dispose();
 
                 if (!math.all(math.isfinite(box.Min)) || !math.all(math.isfinite(box.Max)))
                     return;
