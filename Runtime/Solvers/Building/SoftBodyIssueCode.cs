@@ -135,5 +135,16 @@ namespace SoftBodyDynamics.Solvers
         TetrahedronSliver = 130,
         /// <summary>Warning: nodes that no tetrahedron uses (they get no mass and move freely). Index: the first such node.</summary>
         UnusedNodes = 131,
+
+        // ---- Authoring of every method (SoftBodyAuthoringValidation)
+
+        /// <summary>The authoring component's method is not one of Shape Matching, Mass Spring or FEM.</summary>
+        MethodInvalid = 190,
+        /// <summary>
+        /// Warning: the finite elements are too stiff for the substep of the explicit integrator (symplectic Euler, or an
+        /// unsupported model/integrator pair that falls back to it): h exceeds <c>FemStability.MaxStableStep</c>. Use more
+        /// substeps, a softer material, a lower resolution, or an unconditionally stable integrator.
+        /// </summary>
+        FemStepAboveStableLimit = 191,
     }
 }
