@@ -146,5 +146,37 @@ namespace SoftBodyDynamics.Solvers
         /// substeps, a softer material, a lower resolution, or an unconditionally stable integrator.
         /// </summary>
         FemStepAboveStableLimit = 191,
+
+        // Mass-spring networks (MassSpringNetwork.Build, MassSpringCalibration). 150–159: 120–131 are the tetrahedraliser's.
+        /// <summary>The tetrahedral mesh has no nodes or no tetrahedra.</summary>
+        MassSpringEmptyMesh = 150,
+        /// <summary>A tetrahedron refers to a node that does not exist. Index: the first such tetrahedron.</summary>
+        MassSpringTetrahedronIndexOutOfRange = 151,
+        /// <summary>A node position is NaN or infinite. Index: the first such node.</summary>
+        MassSpringNonFiniteNode = 152,
+        /// <summary>
+        /// Warning: an edge has zero rest length (a tetrahedron repeats a node, or two nodes coincide). Its spring is
+        /// left out: it has no direction to act along. Index: the first such tetrahedron.
+        /// </summary>
+        MassSpringZeroLengthEdge = 153,
+        /// <summary>
+        /// Warning: a tetrahedron appears twice (the same four nodes, e.g. doubled back-to-back geometry). The copy is
+        /// merged: its edges and volume count once. Index: the first copy.
+        /// </summary>
+        MassSpringDuplicateTetrahedron = 154,
+        /// <summary>Warning: a tetrahedron has zero volume; it adds no stiffness or mass. Index: the first such tetrahedron.</summary>
+        MassSpringDegenerateTetrahedron = 155,
+        /// <summary>Warning: a node belongs to no tetrahedron: it gets no spring and the mean mass, and falls freely. Index: the first such node.</summary>
+        MassSpringIsolatedNode = 156,
+        /// <summary>No spring is left after the zero-length edges were removed.</summary>
+        MassSpringNoSprings = 157,
+        /// <summary>The material is invalid (E ≤ 0, ν outside [0, 0.5), ρ ≤ 0 or ζ &lt; 0, or not finite).</summary>
+        MassSpringMaterialInvalid = 158,
+        /// <summary>
+        /// Warning: the springs are too stiff for the substep of an explicit integrator (symplectic Euler, Verlet):
+        /// h exceeds <see cref="MassSpringStability.MaxStableStep"/> and the body would blow up (the guard resets it).
+        /// Use more substeps, softer springs, or the ImplicitEuler or Xpbd integrator.
+        /// </summary>
+        MassSpringStepAboveStableLimit = 159,
     }
 }
