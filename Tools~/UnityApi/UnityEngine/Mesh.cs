@@ -20,9 +20,6 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/Mesh-vertices.html
         public Vector3[] vertices { get => throw null; set => throw null; }
 
-        // https://docs.unity3d.com/ScriptReference/Mesh-normals.html (an empty array when the mesh has no normals)
-        public Vector3[] normals { get => throw null; set => throw null; }
-
         // https://docs.unity3d.com/ScriptReference/Mesh-triangles.html
         public int[] triangles { get => throw null; set => throw null; }
 
