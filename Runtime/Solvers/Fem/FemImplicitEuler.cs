@@ -86,9 +86,33 @@ namespace SoftBodyDynamics.Solvers
                         p[i] = z[i] + b * p[i];
                 }
             }
+            RemoveMomentumError(dv, m, w);
             for (int i = 0; i < n; i++)
                 v[i] += dv[i];
             return iterations;
+        }
+
+        /// <summary>
+        /// Internal forces change no momentum: 1ᵀK = 0 and Σ bᵢ = h Σ fᵢ = 0, so the exact Δv has Σ mᵢ Δvᵢ = 0, but a CG
+        /// iterate stopped at the tolerance has Σ mᵢ Δvᵢ = −Σ rᵢ. For a body with no pinned node the mass-weighted mean of
+        /// Δv is removed (a projection toward the exact solution); a pinned body exchanges momentum with its pins anyway.
+        /// </summary>
+        static void RemoveMomentumError(Span<float3> dv, ReadOnlySpan<float> m, ReadOnlySpan<float> w)
+        {
+            // Summed in double: the float sum's own round-off (~ε Σ mᵢ|Δvᵢ| √n) would be the error it removes.
+            double px = 0.0, py = 0.0, pz = 0.0, mass = 0.0;
+            for (int i = 0; i < dv.Length; i++)
+            {
+                if (!(w[i] > 0f))
+                    return;
+                px += (double)m[i] * dv[i].x;
+                py += (double)m[i] * dv[i].y;
+                pz += (double)m[i] * dv[i].z;
+                mass += m[i];
+            }
+            var mean = new float3((float)(px / mass), (float)(py / mass), (float)(pz / mass));
+            for (int i = 0; i < dv.Length; i++)
+                dv[i] -= mean;
         }
 
         /// <summary>z = D⁻¹ r with D = mᵢ + c kᵢ (0 at pinned nodes); returns r · z.</summary>

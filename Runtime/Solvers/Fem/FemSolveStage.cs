@@ -91,6 +91,11 @@ namespace SoftBodyDynamics.Solvers
             var v = body.Velocities;
             var slots = new Span<float3>(m_Slots, 4 * m_ElementCount);
             ReadOnlySpan<float> w = model.InverseMasses;
+            // A pinned node does not move: the shared step gave it the substep's gravity, which would reach the damping
+            // and the implicit system's K v as a spurious velocity (the step zeroes it after the solve anyway).
+            for (int i = 0; i < x.Length; i++)
+                if (!(w[i] > 0f))
+                    v[i] = float3.zero;
             switch (m_Integrator)
             {
                 case FemIntegrator.ImplicitEuler:
@@ -104,18 +109,18 @@ namespace SoftBodyDynamics.Solvers
                 }
                 case FemIntegrator.Xpbd:
                 {
-                    // Predict p = x + h v, project colour by colour, v = (p − x) / h.
-                    Span<float3> p = body.Scratch;
+                    // Predict p = x + d with d = h v, project colour by colour, v = d / h.
+                    Span<float3> d = body.Scratch;
                     for (int i = 0; i < x.Length; i++)
-                        p[i] = w[i] > 0f ? x[i] + h * v[i] : x[i];
+                        d[i] = w[i] > 0f ? h * v[i] : float3.zero;
                     var multipliers = new Span<float3>(m_Multipliers, m_ElementCount);
                     multipliers.Clear();
                     for (int it = 0; it < m_Parameters.Iterations; it++)
                         for (int c = 0; c < m_ColorCount; c++)
-                            FemXpbd.Project(model, model.ColorElements, x, p, multipliers, h, m_Beta, model.ColorOffsets[c], model.ColorOffsets[c + 1]);
+                            FemXpbd.Project(model, model.ColorElements, x, d, multipliers, h, m_Beta, model.ColorOffsets[c], model.ColorOffsets[c + 1]);
                     float invH = 1f / h;
                     for (int i = 0; i < x.Length; i++)
-                        v[i] = (p[i] - x[i]) * invH;
+                        v[i] = d[i] * invH;
                     break;
                 }
                 default:

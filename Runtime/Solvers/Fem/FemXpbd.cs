@@ -19,10 +19,12 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>
         /// Projects the elements <paramref name="colorElements"/>[<paramref name="start"/> .. <paramref name="end"/>) (all of
-        /// one colour) on the predicted positions <paramref name="p"/>; <paramref name="x"/> are the positions at the
-        /// substep's start (damping), <paramref name="multipliers"/> the per-element (λ_D, λ_H) of the substep.
+        /// one colour) on the predicted positions p = x + d: <paramref name="x"/> are the positions at the substep's start
+        /// and <paramref name="d"/> the displacements of the substep (h v on entry), which the projection updates. Working
+        /// on d rather than p keeps v = d / h exact to float32 round-off of d (p − x would lose the digits of x).
+        /// <paramref name="multipliers"/> holds the per-element (λ_D, λ_H) of the substep.
         /// </summary>
-        public static void Project(in FemModel model, ReadOnlySpan<int> colorElements, ReadOnlySpan<float3> x, Span<float3> p,
+        public static void Project(in FemModel model, ReadOnlySpan<int> colorElements, ReadOnlySpan<float3> x, Span<float3> d,
             Span<float3> multipliers, float h, float beta, int start, int end)
         {
             float mu = model.Mu;
@@ -37,21 +39,29 @@ namespace SoftBodyDynamics.Solvers
                 int4 n = element.Nodes;
                 float3 lambdas = multipliers[e];
                 // Deviatoric: C_D = ‖F‖_F, ∂C_D/∂F = F / C_D.
-                float3x3 f = FemElasticity.DeformationGradient(p[n.x], p[n.y], p[n.z], p[n.w], element.InverseRestShape);
+                float3x3 f = Gradient(element, x, d);
                 float cd = math.sqrt(FemElasticity.DoubleDot(f, f));
                 if (cd > 1e-12f)
-                    lambdas.x += Apply(element, f * (1f / cd), cd, invH2 / (mu * element.RestVolume), beta * h, lambdas.x, x, p, w);
+                    lambdas.x += Apply(element, f * (1f / cd), cd, invH2 / (mu * element.RestVolume), beta * h, lambdas.x, d, w);
                 // Hydrostatic: C_H = det F − γ, ∂C_H/∂F = cof F (from the positions the deviatoric step left).
-                f = FemElasticity.DeformationGradient(p[n.x], p[n.y], p[n.z], p[n.w], element.InverseRestShape);
+                f = Gradient(element, x, d);
                 float ch = math.determinant(f) - gamma;
-                lambdas.y += Apply(element, FemElasticity.Cofactor(f), ch, invH2 / (lambdaSnh * element.RestVolume), beta * h, lambdas.y, x, p, w);
+                lambdas.y += Apply(element, FemElasticity.Cofactor(f), ch, invH2 / (lambdaSnh * element.RestVolume), beta * h, lambdas.y, d, w);
                 multipliers[e] = lambdas;
             }
         }
 
+        /// <summary>F of p = x + d, with Ds = (xₖ − x₀) + (dₖ − d₀).</summary>
+        static float3x3 Gradient(in TetElement element, ReadOnlySpan<float3> x, ReadOnlySpan<float3> d)
+        {
+            int4 n = element.Nodes;
+            var ds = new float3x3(x[n.y] - x[n.x] + (d[n.y] - d[n.x]), x[n.z] - x[n.x] + (d[n.z] - d[n.x]), x[n.w] - x[n.x] + (d[n.w] - d[n.x]));
+            return math.mul(ds, element.InverseRestShape);
+        }
+
         /// <summary>One constraint's XPBD update (eq. 26 of Macklin et al. 2016) given ∂C/∂F; returns Δλ.</summary>
         static float Apply(in TetElement element, in float3x3 dcdf, float constraint, float alphaTilde, float betaH, float lambda,
-            ReadOnlySpan<float3> x, Span<float3> p, ReadOnlySpan<float> w)
+            Span<float3> p, ReadOnlySpan<float> w)
         {
             int4 n = element.Nodes;
             // ∇ᵢC: columns of (∂C/∂F) Dm⁻ᵀ for nodes 1..3, minus their sum for node 0.
@@ -60,8 +70,8 @@ namespace SoftBodyDynamics.Solvers
             float w0 = w[n.x], w1 = w[n.y], w2 = w[n.z], w3 = w[n.w];
             float weighted = w0 * math.lengthsq(g0) + w1 * math.lengthsq(g.c0) + w2 * math.lengthsq(g.c1) + w3 * math.lengthsq(g.c2);
             float dampingGamma = alphaTilde * betaH;
-            float velocityTerm = math.dot(g0, p[n.x] - x[n.x]) + math.dot(g.c0, p[n.y] - x[n.y]) + math.dot(g.c1, p[n.z] - x[n.z])
-                                 + math.dot(g.c2, p[n.w] - x[n.w]);
+            // p holds the displacements d = p − x of the substep.
+            float velocityTerm = math.dot(g0, p[n.x]) + math.dot(g.c0, p[n.y]) + math.dot(g.c1, p[n.z]) + math.dot(g.c2, p[n.w]);
             float denominator = (1f + dampingGamma) * weighted + alphaTilde;
             if (!(denominator > 0f))
                 return 0f;

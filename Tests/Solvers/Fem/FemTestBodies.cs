@@ -1,0 +1,127 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>Box meshes of tetrahedra and a body holding every array a finite-element step needs (tests only).</summary>
+    public static class FemTestBodies
+    {
+        /// <summary>
+        /// A box of nx × ny × nz cubes of size <paramref name="size"/>/n per axis, from the origin, each split into six
+        /// positively oriented tetrahedra around its main diagonal (Kuhn's split: conforming between cubes).
+        /// </summary>
+        public static TetrahedralMesh Box(int nx, int ny, int nz, float3 size)
+        {
+            var positions = new float3[(nx + 1) * (ny + 1) * (nz + 1)];
+            int Index(int i, int j, int k) => (k * (ny + 1) + j) * (nx + 1) + i;
+            for (int k = 0; k <= nz; k++)
+                for (int j = 0; j <= ny; j++)
+                    for (int i = 0; i <= nx; i++)
+                        positions[Index(i, j, k)] = new float3(i * size.x / nx, j * size.y / ny, k * size.z / nz);
+            var tets = new List<int4>();
+            var permutations = new[]
+            {
+                new[] { 0, 1, 2 }, new[] { 0, 2, 1 }, new[] { 1, 0, 2 }, new[] { 1, 2, 0 }, new[] { 2, 0, 1 }, new[] { 2, 1, 0 },
+            };
+            for (int k = 0; k < nz; k++)
+                for (int j = 0; j < ny; j++)
+                    for (int i = 0; i < nx; i++)
+                        foreach (int[] perm in permutations)
+                        {
+                            var corner = new[] { i, j, k };
+                            var path = new int[4];
+                            path[0] = Index(corner[0], corner[1], corner[2]);
+                            for (int s = 0; s < 3; s++)
+                            {
+                                corner[perm[s]] += 1;
+                                path[s + 1] = Index(corner[0], corner[1], corner[2]);
+                            }
+                            var t = new int4(path[0], path[1], path[2], path[3]);
+                            if (TetrahedralMesh.SignedVolume(positions[t.x], positions[t.y], positions[t.z], positions[t.w]) < 0f)
+                                t = new int4(t.x, t.z, t.y, t.w);
+                            tets.Add(t);
+                        }
+            return new TetrahedralMesh(positions, tets.ToArray());
+        }
+
+        /// <summary>Bakes <paramref name="mesh"/>; throws when baking reports an error.</summary>
+        public static FemModelData Bake(TetrahedralMesh mesh, ElasticMaterial material, bool[] pinned = null)
+        {
+            var issues = new List<SoftBodyIssue>();
+            FemModelData data = FemModelData.Create(mesh, material, pinned ?? Array.Empty<bool>(), issues);
+            if (data == null)
+                throw new InvalidOperationException("Bake failed: " + string.Join("; ", issues));
+            return data;
+        }
+    }
+
+    /// <summary>One finite-element body with its own arrays.</summary>
+    public sealed class FemTestBody
+    {
+        public readonly FemModelData Data;
+        public FemParameters Parameters;
+        public readonly float3[] Positions, Velocities, ParticleScratch, ElementScratch;
+        public readonly quaternion[] Rotations;
+        public SoftBodyStatus Status;
+
+        public FemTestBody(FemModelData data, FemParameters parameters, float3 position = default)
+        {
+            Data = data;
+            Parameters = parameters;
+            int n = data.RestPositions.Length, e = data.Elements.Length;
+            Positions = new float3[n];
+            Velocities = new float3[n];
+            ParticleScratch = new float3[FemState.ScratchPerParticle * n];
+            ElementScratch = new float3[FemState.ScratchPerElement * e];
+            Rotations = new quaternion[e];
+            FemSolver.Initialize(Data.AsModel(), State, position, quaternion.identity, float3.zero, out Status);
+        }
+
+        public FemState State => FemState.FromScratch(Positions, Velocities, Rotations, ParticleScratch, ElementScratch);
+
+        public FemStepReport Step(float dt, ColliderShape[] colliders = null) =>
+            FemSolver.Step(Data.AsModel(), Parameters, colliders ?? Array.Empty<ColliderShape>(), dt, State, ref Status);
+
+        /// <summary>Smallest det F over the elements.</summary>
+        public float MinDeterminant()
+        {
+            float min = float.MaxValue;
+            foreach (TetElement t in Data.Elements)
+            {
+                int4 n = t.Nodes;
+                min = math.min(min, math.determinant(FemElasticity.DeformationGradient(Positions[n.x], Positions[n.y], Positions[n.z],
+                    Positions[n.w], t.InverseRestShape)));
+            }
+            return min;
+        }
+
+        /// <summary>Σ of the elements' current volumes (m³).</summary>
+        public float Volume()
+        {
+            float v = 0f;
+            foreach (TetElement t in Data.Elements)
+                v += TetrahedralMesh.SignedVolume(Positions[t.Nodes.x], Positions[t.Nodes.y], Positions[t.Nodes.z], Positions[t.Nodes.w]);
+            return v;
+        }
+
+        /// <summary>Σ mᵢ vᵢ (kg m/s).</summary>
+        public double[] Momentum()
+        {
+            var p = new double[3];
+            for (int i = 0; i < Positions.Length; i++)
+                for (int a = 0; a < 3; a++)
+                    p[a] += (double)Data.Masses[i] * Velocities[i][a];
+            return p;
+        }
+
+        public bool AllFinite()
+        {
+            for (int i = 0; i < Positions.Length; i++)
+                if (!math.all(math.isfinite(Positions[i])) || !math.all(math.isfinite(Velocities[i])))
+                    return false;
+            return true;
+        }
+    }
+}
