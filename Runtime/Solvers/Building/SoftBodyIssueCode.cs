@@ -112,61 +112,61 @@ namespace SoftBodyDynamics.Solvers
         // ---- tetrahedralisation (LatticeTetrahedralizer) and tetrahedral meshes (TetrahedralMeshChecks)
 
         /// <summary>TetrahedralizationSettings.Resolution outside 1..128.</summary>
-        TetResolutionOutOfRange = 120,
+        TetResolutionOutOfRange = 160,
         /// <summary>TetrahedralizationSettings.MaxNodes is not positive.</summary>
-        MaxNodesInvalid = 121,
+        MaxNodesInvalid = 161,
         /// <summary>The volume mesh would have more nodes than TetrahedralizationSettings.MaxNodes.</summary>
-        TooManyNodes = 122,
+        TooManyNodes = 162,
         /// <summary>The surface has boundary or non-manifold edges (after welding), so it encloses no volume to fill with tetrahedra. Index: the first such triangle.</summary>
-        VolumeMeshNotClosed = 123,
+        VolumeMeshNotClosed = 163,
         /// <summary>Neighbouring triangles are wound in opposite senses, so the inside of the volume is undefined. Index: the first such triangle.</summary>
-        VolumeMeshInconsistentWinding = 124,
+        VolumeMeshInconsistentWinding = 164,
         /// <summary>A tetrahedral mesh has no nodes or no tetrahedra.</summary>
-        EmptyTetrahedralMesh = 125,
+        EmptyTetrahedralMesh = 165,
         /// <summary>A tetrahedral-mesh node position is NaN or infinite. Index: the first such node.</summary>
-        NonFiniteNode = 126,
+        NonFiniteNode = 166,
         /// <summary>A tetrahedron refers to a node that does not exist. Index: the first such tetrahedron.</summary>
-        TetrahedronIndexOutOfRange = 127,
+        TetrahedronIndexOutOfRange = 167,
         /// <summary>A tetrahedron has zero volume (a repeated node, or flat to float32 precision). Index: the first such tetrahedron.</summary>
-        TetrahedronDegenerate = 128,
+        TetrahedronDegenerate = 168,
         /// <summary>A tetrahedron has negative volume: its nodes are not positively oriented. Index: the first such tetrahedron.</summary>
-        TetrahedronInverted = 129,
+        TetrahedronInverted = 169,
         /// <summary>Warning: tetrahedra of poor shape (quality below TetrahedralMeshChecks.SliverQuality). Index: the worst one.</summary>
-        TetrahedronSliver = 130,
+        TetrahedronSliver = 170,
         /// <summary>Warning: nodes that no tetrahedron uses (they get no mass and move freely). Index: the first such node.</summary>
-        UnusedNodes = 131,
+        UnusedNodes = 171,
 
-        // Mass-spring networks (MassSpringNetwork.Build, MassSpringCalibration). 150–159: 120–131 are the tetrahedraliser's.
+        // Mass-spring networks (MassSpringNetwork.Build, MassSpringCalibration).
         /// <summary>The tetrahedral mesh has no nodes or no tetrahedra.</summary>
-        MassSpringEmptyMesh = 150,
+        MassSpringEmptyMesh = 120,
         /// <summary>A tetrahedron refers to a node that does not exist. Index: the first such tetrahedron.</summary>
-        MassSpringTetrahedronIndexOutOfRange = 151,
+        MassSpringTetrahedronIndexOutOfRange = 121,
         /// <summary>A node position is NaN or infinite. Index: the first such node.</summary>
-        MassSpringNonFiniteNode = 152,
+        MassSpringNonFiniteNode = 122,
         /// <summary>
         /// Warning: an edge has zero rest length (a tetrahedron repeats a node, or two nodes coincide). Its spring is
         /// left out: it has no direction to act along. Index: the first such tetrahedron.
         /// </summary>
-        MassSpringZeroLengthEdge = 153,
+        MassSpringZeroLengthEdge = 123,
         /// <summary>
         /// Warning: a tetrahedron appears twice (the same four nodes, e.g. doubled back-to-back geometry). The copy is
         /// merged: its edges and volume count once. Index: the first copy.
         /// </summary>
-        MassSpringDuplicateTetrahedron = 154,
+        MassSpringDuplicateTetrahedron = 124,
         /// <summary>Warning: a tetrahedron has zero volume; it adds no stiffness or mass. Index: the first such tetrahedron.</summary>
-        MassSpringDegenerateTetrahedron = 155,
+        MassSpringDegenerateTetrahedron = 125,
         /// <summary>Warning: a node belongs to no tetrahedron: it gets no spring and the mean mass, and falls freely. Index: the first such node.</summary>
-        MassSpringIsolatedNode = 156,
+        MassSpringIsolatedNode = 126,
         /// <summary>No spring is left after the zero-length edges were removed.</summary>
-        MassSpringNoSprings = 157,
+        MassSpringNoSprings = 127,
         /// <summary>The material is invalid (E ≤ 0, ν outside [0, 0.5), ρ ≤ 0 or ζ &lt; 0, or not finite).</summary>
-        MassSpringMaterialInvalid = 158,
+        MassSpringMaterialInvalid = 128,
         /// <summary>
         /// Warning: the springs are too stiff for the substep of an explicit integrator (symplectic Euler, Verlet):
         /// h exceeds <see cref="MassSpringStability.MaxStableStep"/> and the body would blow up (the guard resets it).
         /// Use more substeps, softer springs, or the ImplicitEuler or Xpbd integrator.
         /// </summary>
-        MassSpringStepAboveStableLimit = 159,
+        MassSpringStepAboveStableLimit = 129,
 
         // ---- finite-element model (FemModelData.Create)
 
