@@ -25,6 +25,8 @@ namespace SoftBodyDynamics.Editor
         [DrawGizmo(GizmoType.Selected | GizmoType.Active)]
         static void DrawParticlesAndClusters(SoftBodyAuthoring authoring, GizmoType gizmoType)
         {
+            if (authoring.method != SoftBodyMethod.ShapeMatching)
+                return; // SoftBodyTetrahedralGizmos draws the other methods.
             Mesh mesh = SoftBodyAuthoringValidation.FindReadableMesh(authoring, null);
             if (mesh == null)
                 return;

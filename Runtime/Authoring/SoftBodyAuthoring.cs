@@ -6,10 +6,13 @@ using UnityEngine.Serialization;
 namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
-    /// Makes this GameObject's mesh (from its MeshFilter) a shape-matching soft body. At bake time the mesh, scaled
-    /// by the Transform, is welded into surface particles, optionally filled with interior particles, grouped into
-    /// overlapping clusters and stored in a blob; at runtime the body starts at this GameObject's world position and
-    /// rotation, as a root entity (not parented) at scale 1.
+    /// Makes this GameObject's mesh (from its MeshFilter) a soft body simulated by the chosen <see cref="method"/>.
+    /// Shape matching: at bake time the mesh, scaled by the Transform, is welded into surface particles, optionally
+    /// filled with interior particles, grouped into overlapping clusters and stored in a blob. Mass-spring and FEM: the
+    /// closed mesh is filled with tetrahedra on a lattice of <see cref="tetResolution"/> cells along its longest side,
+    /// the render vertices are embedded in them, and the springs or elements are built from the physical material
+    /// (<see cref="Material"/>). At runtime the body starts at this GameObject's world position and rotation, as a root
+    /// entity (not parented) at scale 1.
     /// Every field is checked by <see cref="SoftBodyAuthoringValidation"/>; a body with an error is not baked.
     /// </summary>
     [DisallowMultipleComponent]
@@ -21,10 +24,18 @@ namespace SoftBodyDynamics.Authoring
         static readonly ShapeMatchingMaterial k_Jelly = SoftBodyPresets.Jelly;
         static readonly ShapeMatchingParameters k_Solver = ShapeMatchingParameters.Default;
 
+        // ---- Method
+
+        [Tooltip("What holds the body together. Shape Matching: particles pulled toward best-fit cluster shapes (cheapest, "
+                 + "stable at any step). Mass Spring: springs along the edges of tetrahedra that fill the mesh. FEM: linear "
+                 + "tetrahedral finite elements (the accurate reference). Mass Spring and FEM need a closed mesh. Default Shape Matching.")]
+        public SoftBodyMethod method = SoftBodyMethod.ShapeMatching;
+
         // ---- Preset
 
-        [Tooltip("Material preset: sets Mode, Frequency, Damping Ratio, Beta, Plasticity, Friction and Restitution. "
-                 + "Editing one of those by hand switches to Custom.")]
+        [Tooltip("Material preset: sets the physical material (Young's modulus, Poisson ratio, density, damping ratio; used by "
+                 + "Mass Spring and FEM) and the shape-matching values (Mode, Frequency, Damping Ratio, Beta, Plasticity), Friction "
+                 + "and Restitution. Editing one of those by hand switches to Custom.")]
         public SoftBodyPreset preset = SoftBodyPreset.Jelly;
 
         /// <summary>The preset whose values the fields hold (detects a newly picked preset in OnValidate).</summary>
@@ -98,6 +109,58 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Uniform acceleration on every particle (m/s²): gravity plus any wind-like force per mass. Default (0, −9.81, 0).")]
         public Vector3 gravity = UnityMathConversions.ToVector3(k_Solver.Acceleration);
 
+        // ---- Physical material (mass-spring and FEM)
+
+        [Tooltip("Young's modulus E (Pa): stress per unit strain; how stiff the material is, whatever the method. 1e4 = soft "
+                 + "jelly, 1e6 = rubber. Jelly 1e4 Pa.")]
+        [Min(0f)]
+        public float youngsModulus = ElasticMaterial.Jelly.YoungsModulus;
+
+        [Tooltip("Poisson ratio ν (dimensionless, 0 to below 0.5): how much the material narrows when stretched; near 0.5 it "
+                 + "keeps its volume. Jelly 0.45.")]
+        [Range(0f, 0.499f)]
+        public float poissonRatio = ElasticMaterial.Jelly.PoissonRatio;
+
+        [Tooltip("Density ρ (kg/m³): the body's mass is ρ times the volume of its tetrahedra. Water 1000. Jelly 1000 kg/m³.")]
+        [Min(0f)]
+        public float density = ElasticMaterial.Jelly.Density;
+
+        [Tooltip("Damping ratio ζ of the body's slowest deformation mode (dimensionless): 0 = rings forever, 1 = critically "
+                 + "damped. Jelly 0.1.")]
+        [Min(0f)]
+        public float materialDampingRatio = ElasticMaterial.Jelly.DampingRatio;
+
+        // ---- Tetrahedra (mass-spring and FEM)
+
+        [Tooltip("Lattice cells along the mesh's longest side (1–128). Each kept cell becomes 6 tetrahedra; cost grows with "
+                 + "the cube of it (8: about 500 nodes for a compact body). More: finer deformation and a closer volume, slower "
+                 + "bake and step. Default 8.")]
+        [Range(TetrahedralizationSettings.MinResolution, TetrahedralizationSettings.MaxResolution)]
+        public int tetResolution = TetrahedralizationSettings.DefaultResolution;
+
+        // ---- Mass-spring
+
+        [Tooltip("How the springs advance in time. Symplectic Euler and Verlet: cheapest, stable only below the stable step "
+                 + "(the inspector warns). Implicit Euler: stable at any step, damps fast wobble. XPBD: stable at any step, "
+                 + "converges with substeps. Default Symplectic Euler.")]
+        public MassSpringIntegrator massSpringIntegrator = MassSpringParameters.Default.Integrator;
+
+        [Tooltip("Add a bending spring across every pair of tetrahedra sharing a face (stiffer against hinging). The material "
+                 + "calibration accounts for them. Default off.")]
+        public bool bendingSprings = MassSpringBuildSettings.Default.BendingSprings;
+
+        // ---- FEM
+
+        [Tooltip("Constitutive model. Co-Rotational: linear elasticity with element rotations removed (exact for large "
+                 + "rotations, linear in stretch). Neo-Hookean: non-linear, stiffens under compression, recovers from "
+                 + "inversion. Default Co-Rotational.")]
+        public FemMaterialModel femModel = FemParameters.Default.Model;
+
+        [Tooltip("How the elements advance in time. Symplectic Euler: explicit, stable only below the stable step (the "
+                 + "inspector warns). Implicit Euler: co-rotational only, stable at any step. XPBD: Neo-Hookean only, stable at "
+                 + "any step. An unsupported pair falls back to Symplectic Euler. Default from the solver.")]
+        public FemIntegrator femIntegrator = FemParameters.Default.Integrator;
+
         // ---- Plasticity
 
         [Tooltip("Strain (‖S − I‖, dimensionless) above which the rest shape starts to flow. 0 with Creep 0 = perfectly elastic. "
@@ -169,7 +232,63 @@ namespace SoftBodyDynamics.Authoring
             MaxParticles = maxParticles,
         };
 
-        /// <summary>The solver parameters (runtime).</summary>
+        /// <summary>The physical material of the mass-spring and FEM methods.</summary>
+        public ElasticMaterial Material => new ElasticMaterial(youngsModulus, poissonRatio, density, materialDampingRatio);
+
+        /// <summary>How the mesh becomes tetrahedra for the mass-spring and FEM methods (bake time); the weld settings are the Shape section's.</summary>
+        public TetrahedralizationSettings TetrahedralizationSettings => new TetrahedralizationSettings
+        {
+            Resolution = tetResolution,
+            MaxNodes = maxParticles,
+            WeldTolerance = weldTolerance,
+            WeldDistance = weldDistance,
+        };
+
+        /// <summary>The springs the mass-spring network gets besides the structural ones (bake time).</summary>
+        public MassSpringBuildSettings MassSpringBuildSettings => new MassSpringBuildSettings { BendingSprings = bendingSprings };
+
+        /// <summary>The mass-spring solver parameters (runtime): the shared contact, sleep and limit fields, and the integrator.</summary>
+        public MassSpringParameters MassSpringParameters
+        {
+            get
+            {
+                MassSpringParameters p = MassSpringParameters.Default;
+                p.Integrator = massSpringIntegrator;
+                p.Substeps = substeps;
+                p.Acceleration = UnityMathConversions.ToFloat3(gravity);
+                p.MaxDepenetrationSpeed = maxDepenetrationSpeed;
+                p.ParticleRadius = particleRadius;
+                p.Friction = friction;
+                p.Restitution = restitution;
+                p.SleepSpeed = sleepSpeed;
+                p.SleepDelay = sleepDelay;
+                p.MaxSpeed = maxSpeed;
+                return p;
+            }
+        }
+
+        /// <summary>The finite-element solver parameters (runtime): the shared contact, sleep and limit fields, model and integrator.</summary>
+        public FemParameters FemParameters
+        {
+            get
+            {
+                FemParameters p = FemParameters.Default;
+                p.Model = femModel;
+                p.Integrator = femIntegrator;
+                p.Substeps = substeps;
+                p.Acceleration = UnityMathConversions.ToFloat3(gravity);
+                p.MaxDepenetrationSpeed = maxDepenetrationSpeed;
+                p.ParticleRadius = particleRadius;
+                p.Friction = friction;
+                p.Restitution = restitution;
+                p.SleepSpeed = sleepSpeed;
+                p.SleepDelay = sleepDelay;
+                p.MaxSpeed = maxSpeed;
+                return p;
+            }
+        }
+
+        /// <summary>The shape-matching solver parameters (runtime).</summary>
         public ShapeMatchingParameters Parameters => new ShapeMatchingParameters
         {
             Mode = mode,
@@ -211,8 +330,15 @@ namespace SoftBodyDynamics.Authoring
 
         void ISerializationCallbackReceiver.OnBeforeSerialize() { }
 
-        /// <summary>A component saved by 0.2 keeps its material: see <see cref="SoftBodyPresets.MigrateLegacyStiffness"/>.</summary>
-        void ISerializationCallbackReceiver.OnAfterDeserialize() => SoftBodyPresets.MigrateLegacyStiffness(this);
+        /// <summary>
+        /// A component saved by 0.2 keeps its material (<see cref="SoftBodyPresets.MigrateLegacyStiffness"/>); one saved before
+        /// the physical material existed takes its preset's (<see cref="SoftBodyPresets.MigrateElasticMaterial"/>).
+        /// </summary>
+        void ISerializationCallbackReceiver.OnAfterDeserialize()
+        {
+            SoftBodyPresets.MigrateLegacyStiffness(this);
+            SoftBodyPresets.MigrateElasticMaterial(this);
+        }
 
         void OnValidate() => SoftBodyPresets.Synchronize(this);
     }

@@ -9,7 +9,8 @@ namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
     /// Bakes a <see cref="SoftBodyAuthoring"/>: validates it (<see cref="SoftBodyAuthoringValidation"/>), builds the
-    /// shape blob and adds the soft-body components with <see cref="SoftBodyUninitialized"/> enabled, so the
+    /// blobs of its method (shape matching here; mass-spring and FEM through <see cref="TetrahedralBodyBake"/>) and adds
+    /// the soft-body components with <see cref="SoftBodyUninitialized"/> enabled, so the
     /// runtime places the body at the baked pose on its first step. On any validation error the error is logged
     /// with the GameObject as context and no simulation component is added (the mesh still renders, static).
     /// <para>
@@ -41,6 +42,12 @@ namespace SoftBodyDynamics.Authoring
                 UnityMathConversions.ToQuaternion(transform.rotation)));
             AddComponent<LocalToWorld>(entity); // written by the transform systems from LocalTransform
 
+            if (build.Method != SoftBodyMethod.ShapeMatching)
+            {
+                TetrahedralBodyBake.Write(authoring, build, mesh, new Writer(this, entity));
+                return;
+            }
+
             SoftBodyBuildResult result = build.Result;
             BlobAssetReference<SoftBodyShapeBlob> blob = SoftBodyShapeBlobFactory.Create(result.Model, result.VertexToParticle,
                 build.Mesh.Triangles, Allocator.Persistent);
@@ -60,6 +67,31 @@ namespace SoftBodyDynamics.Authoring
             AddComponent(entity, new SoftBodyImpulse());
             SetComponentEnabled<SoftBodyImpulse>(entity, false);
             AddComponent(entity, new SoftBodyRenderMesh { Mesh = mesh });
+        }
+
+        /// <summary>The baker as an <see cref="ISoftBodyEntityWriter"/> for one entity.</summary>
+        sealed class Writer : ISoftBodyEntityWriter
+        {
+            readonly IBaker m_Baker;
+            readonly Entity m_Entity;
+
+            public Writer(IBaker baker, Entity entity)
+            {
+                m_Baker = baker;
+                m_Entity = entity;
+            }
+
+            public void AddComponent<T>(in T component) where T : unmanaged, IComponentData => m_Baker.AddComponent(m_Entity, component);
+
+            public void AddComponent<T>(in T component, bool enabled) where T : unmanaged, IComponentData, IEnableableComponent
+            {
+                m_Baker.AddComponent(m_Entity, component);
+                m_Baker.SetComponentEnabled<T>(m_Entity, enabled);
+            }
+
+            public void AddBuffer<T>() where T : unmanaged, IBufferElementData => m_Baker.AddBuffer<T>(m_Entity);
+
+            public void AddBlob<T>(ref BlobAssetReference<T> blob) where T : unmanaged => m_Baker.AddBlobAsset(ref blob, out _);
         }
 
         static void Log(SoftBodyAuthoring authoring, List<SoftBodyIssue> issues)

@@ -14,6 +14,12 @@ namespace SoftBodyDynamics.Authoring
     {
         public float3[] Vertices;
         public int[] Triangles;
+        /// <summary>
+        /// Unit vertex normals at the baked scale (the inverse-transpose of the scale applied, n / s normalised), one per
+        /// vertex; computed from the triangles (area-weighted) when the mesh has none. Used by the tetrahedral methods'
+        /// render embedding.
+        /// </summary>
+        public float3[] Normals;
 
         /// <summary>Reads <paramref name="mesh"/>, which must be readable (<see cref="Mesh.isReadable"/>).</summary>
         /// <param name="mesh">The render mesh.</param>
@@ -30,7 +36,34 @@ namespace SoftBodyDynamics.Authoring
             for (int subMesh = 0; subMesh < mesh.subMeshCount; subMesh++)
                 if (mesh.GetTopology(subMesh) == UnityEngine.MeshTopology.Triangles)
                     triangles.AddRange(mesh.GetTriangles(subMesh));
-            return new SoftBodyMeshData { Vertices = vertices, Triangles = triangles.ToArray() };
+            int[] triangleArray = triangles.ToArray();
+            return new SoftBodyMeshData { Vertices = vertices, Triangles = triangleArray, Normals = ReadNormals(mesh.normals, magnitude, vertices, triangleArray) };
         }
+
+        static float3[] ReadNormals(Vector3[] source, float3 scale, float3[] vertices, int[] triangles)
+        {
+            var normals = new float3[vertices.Length];
+            if (source.Length == vertices.Length)
+            {
+                // Normals transform with the inverse transpose of the (diagonal) scale.
+                var inverse = new float3(Inverse(scale.x), Inverse(scale.y), Inverse(scale.z));
+                for (int i = 0; i < normals.Length; i++)
+                    normals[i] = math.normalizesafe(UnityMathConversions.ToFloat3(source[i]) * inverse, new float3(0f, 1f, 0f));
+                return normals;
+            }
+            for (int t = 0; t + 2 < triangles.Length; t += 3)
+            {
+                int a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+                float3 n = math.cross(vertices[b] - vertices[a], vertices[c] - vertices[a]);
+                normals[a] += n;
+                normals[b] += n;
+                normals[c] += n;
+            }
+            for (int i = 0; i < normals.Length; i++)
+                normals[i] = math.normalizesafe(normals[i], new float3(0f, 1f, 0f));
+            return normals;
+        }
+
+        static float Inverse(float s) => s != 0f ? 1f / s : 0f;
     }
 }

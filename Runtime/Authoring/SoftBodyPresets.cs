@@ -4,8 +4,10 @@ using SoftBodyDynamics.Solvers;
 namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
-    /// The values behind each <see cref="SoftBodyPreset"/> (<see cref="ShapeMatchingMaterial"/>, where the
-    /// numbers are explained), and the rule that keeps an authoring component's preset field honest.
+    /// The values behind each <see cref="SoftBodyPreset"/>: the physical material (<see cref="ElasticMaterial"/>, used by
+    /// the mass-spring and FEM methods, the same numbers for both) and the shape-matching values
+    /// (<see cref="ShapeMatchingMaterial"/>, where those numbers are explained), and the rule that keeps an authoring
+    /// component's preset field honest.
     /// </summary>
     public static class SoftBodyPresets
     {
@@ -28,6 +30,21 @@ namespace SoftBodyDynamics.Authoring
             }
         }
 
+        /// <summary>
+        /// The physical material of <paramref name="preset"/> (<see cref="ElasticMaterial"/>'s presets of the same name), the
+        /// same for the mass-spring and FEM methods; <see cref="SoftBodyPreset.Custom"/> has none.
+        /// </summary>
+        public static ElasticMaterial GetMaterial(SoftBodyPreset preset)
+        {
+            switch (preset)
+            {
+                case SoftBodyPreset.Jelly: return ElasticMaterial.Jelly;
+                case SoftBodyPreset.Rubber: return ElasticMaterial.Rubber;
+                case SoftBodyPreset.Clay: return ElasticMaterial.Clay;
+                default: throw new ArgumentOutOfRangeException(nameof(preset), preset, "Custom has no preset values.");
+            }
+        }
+
         /// <summary>Writes <paramref name="preset"/>'s values into <paramref name="authoring"/> and selects it.</summary>
         public static void Apply(SoftBodyAuthoring authoring, SoftBodyPreset preset)
         {
@@ -43,6 +60,11 @@ namespace SoftBodyDynamics.Authoring
                 authoring.plasticMaxDeformation = v.Plasticity.MaxDeformation;
                 authoring.friction = v.Friction;
                 authoring.restitution = v.Restitution;
+                ElasticMaterial m = GetMaterial(preset);
+                authoring.youngsModulus = m.YoungsModulus;
+                authoring.poissonRatio = m.PoissonRatio;
+                authoring.density = m.Density;
+                authoring.materialDampingRatio = m.DampingRatio;
             }
             authoring.preset = preset;
             authoring.appliedPreset = preset;
@@ -58,7 +80,30 @@ namespace SoftBodyDynamics.Authoring
                    && Near(authoring.frequency, v.Frequency) && Near(authoring.dampingRatio, v.DampingRatio) && Near(authoring.beta, v.Beta)
                    && Near(authoring.plasticYield, v.Plasticity.Yield) && Near(authoring.plasticCreep, v.Plasticity.Creep)
                    && Near(authoring.plasticMaxDeformation, v.Plasticity.MaxDeformation)
-                   && Near(authoring.friction, v.Friction) && Near(authoring.restitution, v.Restitution);
+                   && Near(authoring.friction, v.Friction) && Near(authoring.restitution, v.Restitution)
+                   && SameMaterial(authoring, GetMaterial(preset));
+        }
+
+        /// <summary>True when the authored physical material is <paramref name="m"/> (relative tolerance on E and ρ, whose scale is large).</summary>
+        static bool SameMaterial(SoftBodyAuthoring authoring, in ElasticMaterial m) =>
+            NearRelative(authoring.youngsModulus, m.YoungsModulus) && Near(authoring.poissonRatio, m.PoissonRatio)
+            && NearRelative(authoring.density, m.Density) && Near(authoring.materialDampingRatio, m.DampingRatio);
+
+        /// <summary>
+        /// A component saved before the physical material existed deserializes with the field defaults (Jelly's material)
+        /// whatever its preset: it takes its preset's material instead, so the preset is not turned to Custom. A component
+        /// whose material differs from Jelly's, or whose preset is Jelly or Custom, is left alone.
+        /// </summary>
+        public static void MigrateElasticMaterial(SoftBodyAuthoring authoring)
+        {
+            if (authoring.preset == SoftBodyPreset.Custom || authoring.preset == SoftBodyPreset.Jelly
+                || authoring.appliedPreset != authoring.preset || !SameMaterial(authoring, ElasticMaterial.Jelly))
+                return;
+            ElasticMaterial m = GetMaterial(authoring.preset);
+            authoring.youngsModulus = m.YoungsModulus;
+            authoring.poissonRatio = m.PoissonRatio;
+            authoring.density = m.Density;
+            authoring.materialDampingRatio = m.DampingRatio;
         }
 
         /// <summary>
@@ -107,5 +152,7 @@ namespace SoftBodyDynamics.Authoring
         }
 
         static bool Near(float a, float b) => Math.Abs(a - b) <= MatchTolerance;
+
+        static bool NearRelative(float a, float b) => Math.Abs(a - b) <= MatchTolerance * Math.Max(Math.Abs(a), Math.Abs(b));
     }
 }

@@ -6,8 +6,8 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// The components a simulated soft body carries, for bodies created from code (bakers add the same
-    /// set with <c>IBaker</c>): shape, settings, state, the particle and cluster buffers, an enabled
-    /// <see cref="SoftBodyUninitialized"/> and a disabled <see cref="SoftBodyImpulse"/>.
+    /// set with <c>IBaker</c>): shape, settings, state, the particle (and cluster or element) buffers, an enabled
+    /// <see cref="SoftBodyUninitialized"/> and a disabled <see cref="SoftBodyImpulse"/>, for each method.
     /// </summary>
     public static class SoftBodyArchetype
     {
@@ -40,6 +40,56 @@ namespace SoftBodyDynamics
             entityManager.AddBuffer<SoftBodyCluster>(entity);
             if (NeedsQuadraticInverse(parameters, shape.Value.QuadraticInverse.Length))
                 entityManager.AddBuffer<SoftBodyQuadraticInverse>(entity);
+            entityManager.AddComponent<SoftBodyUninitialized>(entity);
+            entityManager.SetComponentEnabled<SoftBodyUninitialized>(entity, true);
+            entityManager.AddComponent<SoftBodyImpulse>(entity);
+            entityManager.SetComponentEnabled<SoftBodyImpulse>(entity, false);
+            if (!entityManager.HasComponent<LocalTransform>(entity))
+                entityManager.AddComponentData(entity, LocalTransform.Identity);
+        }
+
+        /// <summary>
+        /// Makes <paramref name="entity"/> a mass-spring body of <paramref name="shape"/>, placed at its
+        /// <see cref="LocalTransform"/> by the next update of <see cref="MassSpringSimulationSystem"/>. Structural change:
+        /// call it on the main thread.
+        /// </summary>
+        /// <param name="entityManager">The world's entity manager.</param>
+        /// <param name="entity">A root entity (bodies simulate in world space).</param>
+        /// <param name="shape">The blob; the caller keeps ownership of it.</param>
+        /// <param name="parameters">The body's tunables.</param>
+        public static void AddMassSpringComponents(EntityManager entityManager, Entity entity, BlobAssetReference<MassSpringShapeBlob> shape,
+            in MassSpringParameters parameters)
+        {
+            entityManager.AddComponentData(entity, new MassSpringShape { Blob = shape });
+            entityManager.AddComponentData(entity, new MassSpringSettings { Value = parameters });
+            AddParticleBodyComponents(entityManager, entity);
+        }
+
+        /// <summary>
+        /// Makes <paramref name="entity"/> a finite-element body of <paramref name="shape"/>, placed at its
+        /// <see cref="LocalTransform"/> by the next update of <see cref="FemSimulationSystem"/>. Structural change: call it
+        /// on the main thread.
+        /// </summary>
+        /// <param name="entityManager">The world's entity manager.</param>
+        /// <param name="entity">A root entity (bodies simulate in world space).</param>
+        /// <param name="shape">The blob; the caller keeps ownership of it.</param>
+        /// <param name="parameters">The body's tunables.</param>
+        public static void AddFemComponents(EntityManager entityManager, Entity entity, BlobAssetReference<FemShapeBlob> shape,
+            in FemParameters parameters)
+        {
+            entityManager.AddComponentData(entity, new FemShape { Blob = shape });
+            entityManager.AddComponentData(entity, new FemSettings { Value = parameters });
+            entityManager.AddComponentData(entity, new FemDiagnostics());
+            entityManager.AddBuffer<FemElementRotation>(entity);
+            AddParticleBodyComponents(entityManager, entity);
+        }
+
+        /// <summary>What mass-spring and FEM bodies share: state, particle buffers, an enabled uninitialized tag, a disabled impulse.</summary>
+        static void AddParticleBodyComponents(EntityManager entityManager, Entity entity)
+        {
+            entityManager.AddComponentData(entity, ParticleBodyState.Unstepped);
+            entityManager.AddBuffer<SoftBodyPosition>(entity);
+            entityManager.AddBuffer<SoftBodyVelocity>(entity);
             entityManager.AddComponent<SoftBodyUninitialized>(entity);
             entityManager.SetComponentEnabled<SoftBodyUninitialized>(entity, true);
             entityManager.AddComponent<SoftBodyImpulse>(entity);

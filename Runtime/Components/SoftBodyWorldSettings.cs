@@ -4,8 +4,9 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// World-level settings of every soft body (a singleton; optional). When it exists, every body falls with
-    /// <see cref="Gravity"/> instead of its own <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>
+    /// World-level settings of every soft body, whatever its method (a singleton; optional). When it exists, every body
+    /// falls with <see cref="Gravity"/> instead of its own acceleration (e.g.
+    /// <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>)
     /// and takes at least <see cref="MinSubsteps"/> substeps per fixed step. Without it each body uses its own values.
     /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
     /// </summary>
@@ -21,6 +22,22 @@ namespace SoftBodyDynamics
 
         /// <summary><paramref name="body"/> as this world steps it: the world's gravity and at least its substeps.</summary>
         public SoftBodyDynamics.Solvers.ShapeMatchingParameters Apply(SoftBodyDynamics.Solvers.ShapeMatchingParameters body)
+        {
+            body.Acceleration = Gravity;
+            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            return body;
+        }
+
+        /// <summary>A mass-spring body as this world steps it: the world's gravity and at least its substeps.</summary>
+        public SoftBodyDynamics.Solvers.MassSpringParameters Apply(SoftBodyDynamics.Solvers.MassSpringParameters body)
+        {
+            body.Acceleration = Gravity;
+            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            return body;
+        }
+
+        /// <summary>A finite-element body as this world steps it: the world's gravity and at least its substeps.</summary>
+        public SoftBodyDynamics.Solvers.FemParameters Apply(SoftBodyDynamics.Solvers.FemParameters body)
         {
             body.Acceleration = Gravity;
             body.Substeps = math.max(body.Substeps, MinSubsteps);

@@ -11,8 +11,9 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// Writes the deformed shape of every rendered soft body into its own mesh, once per frame. A Burst job
-    /// per body computes mesh-space vertices, welded normals and bounds with <see cref="MeshDeformation"/>
-    /// into <see cref="SoftBodyMeshVertex"/> and <c>RenderBounds</c> (bodies that have not stepped since
+    /// per body computes mesh-space vertices, welded normals and bounds with <see cref="MeshDeformation"/> (shape
+    /// matching: one particle per welded vertex) or <see cref="EmbeddedMeshDeformation"/> (mass-spring and FEM: render
+    /// vertices embedded in tetrahedra, <see cref="SoftBodyEmbedding"/>) into <see cref="SoftBodyMeshVertex"/> and <c>RenderBounds</c> (bodies that have not stepped since
     /// the last write, e.g. sleeping ones, are skipped); then, on the main thread, each changed mesh gets
     /// its position/normal stream through <c>Mesh.SetVertexBufferData</c> and its bounds. Runs before
     /// Entities Graphics updates world bounds and draws.
@@ -36,6 +37,7 @@ namespace SoftBodyDynamics
         public void OnUpdate(ref SystemState state)
         {
             new DeformJob().ScheduleParallel();
+            new EmbeddedDeformJob().ScheduleParallel();
             state.CompleteDependency();
 
             EntityManager entityManager = state.EntityManager;
@@ -85,6 +87,41 @@ namespace SoftBodyDynamics
                 scratch.Dispose();
 
                 // A body the NaN guard is about to reset keeps its last good mesh.
+                if (!math.all(math.isfinite(box.Min)) || !math.all(math.isfinite(box.Max)))
+                    return;
+                renderBounds.Value = new AABB { Center = box.Center, Extents = 0.5f * box.Extent };
+                instance.PendingUpload = true;
+            }
+        }
+
+        /// <summary>The write-back of a tetrahedral body: render vertices from the nodes through the embedding.</summary>
+        [BurstCompile]
+        [WithNone(typeof(SoftBodyUninitialized))]
+        partial struct EmbeddedDeformJob : IJobEntity
+        {
+            void Execute(in SoftBodyEmbedding embedding, in ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+                DynamicBuffer<SoftBodyMeshVertex> vertices, ref SoftBodyMeshInstance instance, ref RenderBounds renderBounds)
+            {
+                if (instance.Deformed && instance.DeformedStep == body.Status.StepCount)
+                    return;
+                ref SoftBodyEmbeddingBlob blob = ref embedding.Blob.Value;
+                if (vertices.Length != blob.VertexCount || vertices.Length == 0 || positions.Length != blob.NodeCount)
+                    return;
+                instance.Deformed = true;
+                instance.DeformedStep = body.Status.StepCount;
+
+                // Nodes into mesh space with the body's placement, Rᵀ(xᵢ − c) + x⁰_cm (as MeshDeformation places shape
+                // matching), then the shared embedded deformation (positions and Nanson normals).
+                int n = positions.Length;
+                var local = new NativeArray<float3>(n, Allocator.Temp, NativeArrayOptions.UninitializedMemory);
+                NativeArray<float3> x = positions.Reinterpret<float3>().AsNativeArray();
+                quaternion inverse = math.conjugate(math.normalizesafe(body.Status.Rotation));
+                for (int i = 0; i < n; i++)
+                    local[i] = math.rotate(inverse, x[i] - body.Status.LocalCenter) + blob.RestCenter;
+                AxisAlignedBox box = EmbeddedMeshDeformation.Deform(blob.VerticesSpan, blob.RestNodePositionsSpan, blob.RestNormalsSpan,
+                    local.AsReadOnlySpan(), vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan());
+                local.Dispose();
+
                 if (!math.all(math.isfinite(box.Min)) || !math.all(math.isfinite(box.Max)))
                     return;
                 renderBounds.Value = new AABB { Center = box.Center, Extents = 0.5f * box.Extent };

@@ -7,7 +7,8 @@ using UnityEngine.Rendering;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Owns the per-body render meshes. A rendered soft body (<see cref="SoftBodyRenderMesh"/> plus Entities
+    /// Owns the per-body render meshes. A rendered soft body (<see cref="SoftBodyRenderMesh"/> with a
+    /// <see cref="SoftBodyShape"/> or a <see cref="SoftBodyEmbedding"/>, plus Entities
     /// Graphics' <c>MaterialMeshInfo</c> and <c>RenderBounds</c>) gets its own deformable copy of the mesh
     /// (<see cref="SoftBodyMeshInstancing"/>), registered with <c>EntitiesGraphicsSystem.RegisterMesh</c> and
     /// set as the entity's runtime mesh; <see cref="SoftBodyMeshInstance"/> and a
@@ -24,6 +25,7 @@ namespace SoftBodyDynamics
     public partial struct SoftBodyRenderMeshSystem : ISystem
     {
         EntityQuery m_NeedInstance;
+        EntityQuery m_NeedEmbeddedInstance;
         EntityQuery m_Orphaned;
         EntityQuery m_AllInstances;
         bool m_WarnedNoRenderer;
@@ -36,9 +38,15 @@ namespace SoftBodyDynamics
                 .WithAll<RenderBounds>()
                 .WithNone<SoftBodyMeshInstance>()
                 .Build();
+            m_NeedEmbeddedInstance = SystemAPI.QueryBuilder()
+                .WithAll<SoftBodyRenderMesh, SoftBodyEmbedding>()
+                .WithPresent<MaterialMeshInfo>()
+                .WithAll<RenderBounds>()
+                .WithNone<SoftBodyMeshInstance>()
+                .Build();
             m_Orphaned = SystemAPI.QueryBuilder().WithAll<SoftBodyMeshInstance>().WithNone<SoftBodyRenderMesh>().Build();
             m_AllInstances = SystemAPI.QueryBuilder().WithAll<SoftBodyMeshInstance>().Build();
-            state.RequireAnyForUpdate(m_NeedInstance, m_Orphaned);
+            state.RequireAnyForUpdate(m_NeedInstance, m_NeedEmbeddedInstance, m_Orphaned);
         }
 
         public void OnUpdate(ref SystemState state)
@@ -47,8 +55,11 @@ namespace SoftBodyDynamics
             var graphics = state.World.GetExistingSystemManaged<EntitiesGraphicsSystem>();
             ReleaseOrphans(entityManager, graphics);
             if (CanRegisterMeshes(graphics))
-                CreateInstances(entityManager, graphics);
-            else if (!m_WarnedNoRenderer && !m_NeedInstance.IsEmpty)
+            {
+                CreateInstances(entityManager, graphics, m_NeedInstance);
+                CreateInstances(entityManager, graphics, m_NeedEmbeddedInstance);
+            }
+            else if (!m_WarnedNoRenderer && (!m_NeedInstance.IsEmpty || !m_NeedEmbeddedInstance.IsEmpty))
             {
                 m_WarnedNoRenderer = true;
                 Debug.LogWarning($"Soft bodies in world '{state.World.Name}' are simulated but not drawn: Entities Graphics " +
@@ -94,15 +105,21 @@ namespace SoftBodyDynamics
             orphans.Dispose();
         }
 
-        void CreateInstances(EntityManager entityManager, EntitiesGraphicsSystem graphics)
+        /// <summary>Render vertices a body binds: from its shape-matching blob, or its embedding (mass-spring, FEM).</summary>
+        static int BoundVertexCount(EntityManager entityManager, Entity entity) =>
+            entityManager.HasComponent<SoftBodyShape>(entity)
+                ? entityManager.GetComponentData<SoftBodyShape>(entity).Blob.Value.VertexCount
+                : entityManager.GetComponentData<SoftBodyEmbedding>(entity).Blob.Value.VertexCount;
+
+        void CreateInstances(EntityManager entityManager, EntitiesGraphicsSystem graphics, EntityQuery needInstance)
         {
-            if (m_NeedInstance.IsEmpty)
+            if (needInstance.IsEmpty)
                 return;
-            NativeArray<Entity> entities = m_NeedInstance.ToEntityArray(Allocator.Temp);
+            NativeArray<Entity> entities = needInstance.ToEntityArray(Allocator.Temp);
             foreach (Entity entity in entities)
             {
                 Mesh source = entityManager.GetComponentData<SoftBodyRenderMesh>(entity).Mesh.Value;
-                int vertexCount = entityManager.GetComponentData<SoftBodyShape>(entity).Blob.Value.VertexCount;
+                int vertexCount = BoundVertexCount(entityManager, entity);
                 MaterialMeshInfo materialMesh = entityManager.GetComponentData<MaterialMeshInfo>(entity);
                 var instance = new SoftBodyMeshInstance { MeshId = BatchMeshID.Null };
 

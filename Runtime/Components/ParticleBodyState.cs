@@ -1,0 +1,21 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Entities;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Runtime bookkeeping of a mass-spring or finite-element body (tier 3): placement, sleep, NaN-guard count and the
+    /// last step's report. The shape-matching counterpart is <see cref="SoftBodyState"/>, whose report has the
+    /// shape-matching extras (rotation fallbacks, plasticity).
+    /// </summary>
+    public struct ParticleBodyState : IComponentData
+    {
+        /// <summary>Centre of mass (m, world) and best-fit rotation after the last good step; sleep state; reset count.</summary>
+        public SoftBodyStatus Status;
+        /// <summary>What the last step did (stepped, slept, reset by the NaN guard and at which particle, contacts, substeps).</summary>
+        public ParticleStepReport LastReport;
+
+        /// <summary>A body not stepped yet.</summary>
+        public static ParticleBodyState Unstepped => new ParticleBodyState { LastReport = new ParticleStepReport { BadParticle = -1 } };
+    }
+}

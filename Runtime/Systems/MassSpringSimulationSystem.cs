@@ -1,0 +1,129 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Burst;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+using Unity.Transforms;
+using UnityEngine;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Places and steps every mass-spring body once per fixed step. Runs only while some entity has a
+    /// <see cref="MassSpringShape"/> (a scene of shape-matching or FEM bodies pays nothing for it). Per update, three
+    /// Burst jobs, one body per job index: bodies with <see cref="SoftBodyUninitialized"/> enabled get their buffers
+    /// sized and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="MassSpringSolver.Initialize"/>);
+    /// pending <see cref="SoftBodyImpulse"/>s are applied; then <see cref="MassSpringSolver.Step"/>, the same function
+    /// the .NET tests call, advances every body against all <see cref="SoftBodyCollider"/>s. A
+    /// <see cref="SoftBodyWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
+    /// matching. The entity's <see cref="LocalTransform"/> follows the body and <see cref="ParticleBodyState"/> holds the
+    /// report; a NaN-guard reset logs a warning naming the entity and the particle.
+    /// </summary>
+    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [BurstCompile]
+    public partial struct MassSpringSimulationSystem : ISystem
+    {
+        EntityQuery m_Colliders;
+
+        [BurstCompile]
+        public void OnCreate(ref SystemState state)
+        {
+            state.RequireForUpdate<MassSpringShape>();
+            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+        }
+
+        [BurstCompile]
+        public void OnUpdate(ref SystemState state)
+        {
+            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+            new InitializeJob().ScheduleParallel();
+            new ApplyImpulseJob().ScheduleParallel();
+            new StepJob
+            {
+                Colliders = colliders,
+                DeltaTime = SystemAPI.Time.DeltaTime,
+                HasWorldSettings = hasWorld,
+                World = world,
+            }.ScheduleParallel();
+            colliders.Dispose(state.Dependency);
+        }
+
+        /// <summary>Sizes the buffers and places the rest shape at the entity's transform (mesh origin; scale reset to 1), at rest.</summary>
+        [BurstCompile]
+        partial struct InitializeJob : IJobEntity
+        {
+            void Execute(in MassSpringShape shape, ref LocalTransform transform, ref ParticleBodyState body,
+                DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
+                EnabledRefRW<SoftBodyUninitialized> uninitialized)
+            {
+                ref MassSpringShapeBlob blob = ref shape.Blob.Value;
+                positions.ResizeUninitialized(blob.ParticleCount);
+                velocities.ResizeUninitialized(blob.ParticleCount);
+                // Placing the rest shape needs no scratch (see MassSpringState).
+                var solverState = MassSpringState.FromScratch(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
+                    default, default);
+                quaternion rotation = math.normalizesafe(transform.Rotation);
+                transform = LocalTransform.FromPositionRotation(transform.Position, rotation);
+                MassSpringSolver.Initialize(blob.AsModel(), solverState, SoftBodyPlacement.CenterOfMass(transform, blob.RestCenter),
+                    rotation, float3.zero, out body.Status);
+                body.LastReport = ParticleBodyState.Unstepped.LastReport;
+                uninitialized.ValueRW = false;
+            }
+        }
+
+        /// <summary>Adds each enabled <see cref="SoftBodyImpulse"/> of a mass-spring body, wakes it and disables the impulse.</summary>
+        [BurstCompile]
+        [WithNone(typeof(SoftBodyUninitialized))]
+        partial struct ApplyImpulseJob : IJobEntity
+        {
+            void Execute(in MassSpringShape shape, ref ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+                DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
+            {
+                // The shape is the filter: only this method's bodies (the FEM system handles its own).
+                ParticleBodyImpulse.Apply(ref body, positions, velocities, impulse);
+                pending.ValueRW = false;
+            }
+        }
+
+        [BurstCompile]
+        [WithNone(typeof(SoftBodyUninitialized))]
+        partial struct StepJob : IJobEntity
+        {
+            /// <summary>Every static collider of the world, gathered this step.</summary>
+            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
+            /// <summary>Fixed time step (s).</summary>
+            public float DeltaTime;
+            /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
+            public bool HasWorldSettings;
+            /// <summary>The world's settings (when <see cref="HasWorldSettings"/>).</summary>
+            public SoftBodyWorldSettings World;
+
+            void Execute(Entity entity, in MassSpringShape shape, in MassSpringSettings settings, ref ParticleBodyState body,
+                ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities)
+            {
+                ref MassSpringShapeBlob blob = ref shape.Blob.Value;
+                int n = blob.ParticleCount;
+                // Buffers are sized by the initialization job; anything else is not a body this job can step.
+                if (positions.Length != n || velocities.Length != n)
+                    return;
+                var scratch = new NativeArray<float3>(MassSpringState.ScratchPerParticle * n, Allocator.Temp,
+                    NativeArrayOptions.UninitializedMemory);
+                var springScratch = new NativeArray<float3>(MassSpringState.ScratchPerSpring * blob.SpringCount, Allocator.Temp,
+                    NativeArrayOptions.UninitializedMemory);
+                var solverState = MassSpringState.FromScratch(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
+                    scratch.AsSpan(), springScratch.AsSpan());
+                MassSpringParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
+                ParticleStepReport report = MassSpringSolver.Step(blob.AsModel(), parameters,
+                    Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
+                scratch.Dispose();
+                springScratch.Dispose();
+
+                body.LastReport = report;
+                if (report.Reset)
+                    Debug.LogWarning($"Mass-spring body Entity({entity.Index}:{entity.Version}) was reset to its rest shape by the NaN guard: particle {report.BadParticle} had a non-finite or excessive position or velocity.");
+                transform = SoftBodyPlacement.ToLocalTransform(body.Status, blob.RestCenter);
+            }
+        }
+    }
+}
