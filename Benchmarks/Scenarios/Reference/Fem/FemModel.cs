@@ -39,6 +39,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly double[] m_N;        // [q·nen + a]
         readonly double[] m_Grad;     // [(q·nen + a)·dim + J], physical gradient
         readonly double[] m_Weight;   // [q], Gauss weight × det J (× thickness in 2-D)
+        readonly int[] m_ScatterMap;  // [(e·ned + r)·ned + c] → CSR value index or −1
 
         /// <param name="mesh">The mesh.</param>
         /// <param name="material">The material law and moduli.</param>
@@ -126,6 +127,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 }
             }
             Pattern = new FemCsrMatrix(rows);
+            // Per element entry (r, c): its index in the CSR values, or −1 if either degree of freedom is fixed.
+            m_ScatterMap = new int[mesh.ElementCount * m_Ned * m_Ned];
+            for (int e = 0; e < mesh.ElementCount; e++)
+            {
+                ElementDofs(e, dofsE);
+                for (int r = 0; r < m_Ned; r++)
+                {
+                    int fr = FreeIndex[dofsE[r]];
+                    for (int c = 0; c < m_Ned; c++)
+                    {
+                        int fc = FreeIndex[dofsE[c]];
+                        m_ScatterMap[(e * m_Ned + r) * m_Ned + c] = fr < 0 || fc < 0 ? -1
+                            : Array.BinarySearch(Pattern.Columns, Pattern.RowStart[fr], Pattern.RowStart[fr + 1] - Pattern.RowStart[fr], fc);
+                    }
+                }
+            }
         }
 
         /// <summary>Free degrees of freedom.</summary>
@@ -240,25 +257,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int i = 0; i < dim; i++)
                 for (int k = 0; k < dim; k++)
                     ke[(n * dim + i) * ned + m * dim + k] = ke[(m * dim + k) * ned + n * dim + i];
-                Scatter(tangent, dofs, ke);
+                Scatter(tangent, e, ke);
             }
             return energy;
         }
 
-        void Scatter(FemCsrMatrix m, int[] dofs, double[] ke)
+        void Scatter(FemCsrMatrix m, int e, double[] ke)
         {
-            int ned = m_Ned;
-            for (int r = 0; r < ned; r++)
+            int count = m_Ned * m_Ned, o = e * count;
+            double[] values = m.Values;
+            for (int k = 0; k < count; k++)
             {
-                int fr = FreeIndex[dofs[r]];
-                if (fr < 0)
-                    continue;
-                for (int c = 0; c < ned; c++)
-                {
-                    int fc = FreeIndex[dofs[c]];
-                    if (fc >= 0)
-                        m.Add(fr, fc, ke[r * ned + c]);
-                }
+                int target = m_ScatterMap[o + k];
+                if (target >= 0)
+                    values[target] += ke[k];
             }
         }
 
@@ -276,12 +288,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int i = 0; i < dim; i++)
                     me[(a * dim + i) * ned + b * dim + i] += v;
             }
-            var dofs = new int[ned];
             for (int e = 0; e < Mesh.ElementCount; e++)
-            {
-                ElementDofs(e, dofs);
-                Scatter(m, dofs, me);
-            }
+                Scatter(m, e, me);
             return m;
         }
 

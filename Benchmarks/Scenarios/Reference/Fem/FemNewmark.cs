@@ -9,7 +9,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     ///   a₁ = 4/h² (u₁ − u₀) − 4/h v₀ − a₀        v₁ = v₀ + h/2 (a₀ + a₁)
     ///   r(u₁) = M a₁ + f_int(u₁) − f_ext = 0,  Newton with (K(u₁) + 4/h² M) Δu = −r
     /// </code>
-    /// each step converged to ‖r‖₂ ≤ <see cref="Tolerance"/>·max(‖f_ext‖, ‖f_int‖, ‖M a‖) on the free degrees of freedom
+    /// each step converged to ‖r‖₂ ≤ <see cref="Tolerance"/>·max(‖f_ext‖, ‖f_int‖, ‖M a‖) on the free degrees of freedom,
+    /// or to a Newton correction below 1e-10 of the step's displacement increment (round-off floor on fine meshes)
     /// (fixed degrees of freedom stay at their values, zero velocity and acceleration). Consistent mass, no damping.
     /// The start acceleration solves M a₀ = f_ext − f_int(u₀).
     /// </summary>
@@ -112,8 +113,19 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (!m_Solver.Factor(m_Keff))
                     break;
                 m_Solver.Solve(m_R, m_Du);
+                double duMax = 0, uMax = 0;
                 for (int k = 0; k < n; k++)
+                {
                     U[free[k]] -= m_Du[k];
+                    duMax = Math.Max(duMax, Math.Abs(m_Du[k]));
+                    uMax = Math.Max(uMax, Math.Abs(U[free[k]] - m_U0[k]));
+                }
+                // Round-off floor: a correction below 1e-10 of this step's displacement increment.
+                if (duMax <= 1e-10 * uMax)
+                {
+                    report.Converged = true;
+                    break;
+                }
             }
             for (int k = 0; k < n; k++)
             {
