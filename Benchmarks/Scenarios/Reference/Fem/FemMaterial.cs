@@ -54,17 +54,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="p">P (Pa), 9 doubles row-major, written.</param>
         /// <param name="tangent">𝔸 (Pa), 81 doubles, written unless empty.</param>
         /// <param name="energy">Ψ (J/m³).</param>
-        public bool Evaluate(ReadOnlySpan<double> h, Span<double> p, Span<double> tangent, out double energy)
+        /// <param name="tangentDimension">3, or 2 to write only the in-plane entries (i, J, k, L &lt; 2) of 𝔸 (plane strain).</param>
+        public bool Evaluate(ReadOnlySpan<double> h, Span<double> p, Span<double> tangent, out double energy, int tangentDimension = 3)
         {
             Span<double> f = stackalloc double[9];
             h.CopyTo(f);
             f[0] += 1; f[4] += 1; f[8] += 1;
             return Law == FemMaterialLaw.NeoHookean
-                ? NeoHookean(h, f, p, tangent, out energy)
-                : StVenantKirchhoff(h, f, p, tangent, out energy);
+                ? NeoHookean(h, f, p, tangent, out energy, tangentDimension)
+                : StVenantKirchhoff(h, f, p, tangent, out energy, tangentDimension);
         }
 
-        bool NeoHookean(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy)
+        bool NeoHookean(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy, int d)
         {
             double trH = h[0] + h[4] + h[8];
             double trH2 = 0, hh = 0;
@@ -103,10 +104,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             if (a.IsEmpty)
                 return true;
             double c = Mu - Lambda * lnJ;
-            for (int i = 0; i < 3; i++)
-            for (int jj = 0; jj < 3; jj++)
-            for (int k = 0; k < 3; k++)
-            for (int l = 0; l < 3; l++)
+            for (int i = 0; i < d; i++)
+            for (int jj = 0; jj < d; jj++)
+            for (int k = 0; k < d; k++)
+            for (int l = 0; l < d; l++)
             {
                 double v = c * g[3 * i + l] * g[3 * k + jj] + Lambda * g[3 * i + jj] * g[3 * k + l];
                 if (i == k && jj == l)
@@ -116,7 +117,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return true;
         }
 
-        bool StVenantKirchhoff(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy)
+        bool StVenantKirchhoff(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy, int d)
         {
             Span<double> e = stackalloc double[9];
             Span<double> s = stackalloc double[9];
@@ -147,10 +148,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int i = 0; i < 3; i++)
             for (int k = 0; k < 3; k++)
                 b[3 * i + k] = f[3 * i] * f[3 * k] + f[3 * i + 1] * f[3 * k + 1] + f[3 * i + 2] * f[3 * k + 2];
-            for (int i = 0; i < 3; i++)
-            for (int jj = 0; jj < 3; jj++)
-            for (int k = 0; k < 3; k++)
-            for (int l = 0; l < 3; l++)
+            for (int i = 0; i < d; i++)
+            for (int jj = 0; jj < d; jj++)
+            for (int k = 0; k < d; k++)
+            for (int l = 0; l < d; l++)
             {
                 double v = Lambda * f[3 * i + jj] * f[3 * k + l] + Mu * f[3 * i + l] * f[3 * k + jj];
                 if (i == k)

@@ -204,7 +204,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                         for (int jj = 0; jj < dim; jj++)
                             f[3 * i + jj] += un * m_Grad[go + n * dim + jj];
                     }
-                    if (!Material.Evaluate(f, p, a, out double psi))
+                    if (!Material.Evaluate(f, p, a, out double psi, dim))
                         return double.NaN;
                     double w = m_Weight[q];
                     energy += w * psi;
