@@ -108,5 +108,37 @@ namespace SoftBodyDynamics.Solvers
         ColliderNonUniformScale = 105,
         /// <summary>Warning: a capsule's height is less than its diameter, so it is a sphere.</summary>
         ColliderCapsuleShorterThanDiameter = 106,
+
+        // Mass-spring networks (MassSpringNetwork.Build, MassSpringCalibration).
+        /// <summary>The tetrahedral mesh has no nodes or no tetrahedra.</summary>
+        MassSpringEmptyMesh = 120,
+        /// <summary>A tetrahedron refers to a node that does not exist. Index: the first such tetrahedron.</summary>
+        MassSpringTetrahedronIndexOutOfRange = 121,
+        /// <summary>A node position is NaN or infinite. Index: the first such node.</summary>
+        MassSpringNonFiniteNode = 122,
+        /// <summary>
+        /// Warning: an edge has zero rest length (a tetrahedron repeats a node, or two nodes coincide). Its spring is
+        /// left out: it has no direction to act along. Index: the first such tetrahedron.
+        /// </summary>
+        MassSpringZeroLengthEdge = 123,
+        /// <summary>
+        /// Warning: a tetrahedron appears twice (the same four nodes, e.g. doubled back-to-back geometry). The copy is
+        /// merged: its edges and volume count once. Index: the first copy.
+        /// </summary>
+        MassSpringDuplicateTetrahedron = 124,
+        /// <summary>Warning: a tetrahedron has zero volume; it adds no stiffness or mass. Index: the first such tetrahedron.</summary>
+        MassSpringDegenerateTetrahedron = 125,
+        /// <summary>Warning: a node belongs to no tetrahedron: it gets no spring and the mean mass, and falls freely. Index: the first such node.</summary>
+        MassSpringIsolatedNode = 126,
+        /// <summary>No spring is left after the zero-length edges were removed.</summary>
+        MassSpringNoSprings = 127,
+        /// <summary>The material is invalid (E ≤ 0, ν outside [0, 0.5), ρ ≤ 0 or ζ &lt; 0, or not finite).</summary>
+        MassSpringMaterialInvalid = 128,
+        /// <summary>
+        /// Warning: the springs are too stiff for the substep of an explicit integrator (symplectic Euler, Verlet):
+        /// h exceeds <see cref="MassSpringStability.MaxStableStep"/> and the body would blow up (the guard resets it).
+        /// Use more substeps, softer springs, or the ImplicitEuler or Xpbd integrator.
+        /// </summary>
+        MassSpringStepAboveStableLimit = 129,
     }
 }

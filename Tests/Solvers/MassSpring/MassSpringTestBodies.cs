@@ -1,0 +1,75 @@
+using System;
+using Unity.Mathematics;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>Small mass-spring bodies and a runner shared by the mass-spring tests.</summary>
+    sealed class MassSpringTestBody
+    {
+        public MassSpringModelData Data;
+        public float3[] Positions, Velocities, Scratch, SpringScratch;
+        public SoftBodyStatus Status;
+
+        public MassSpringTestBody(MassSpringModelData data)
+        {
+            Data = data;
+            int n = data.ParticleCount;
+            Positions = (float3[])data.RestPositions.Clone();
+            Velocities = new float3[n];
+            Scratch = new float3[MassSpringState.ScratchPerParticle * n];
+            SpringScratch = new float3[MassSpringState.ScratchPerSpring * data.SpringCount];
+            Status = new SoftBodyStatus { Rotation = quaternion.identity };
+        }
+
+        public MassSpringState State => MassSpringState.FromScratch(Positions, Velocities, Scratch, SpringScratch);
+
+        public ParticleStepReport Step(in MassSpringParameters p, float dt, int batch = 0) =>
+            MassSpringSolver.Step(Data.AsModel(), p, ReadOnlySpan<ColliderShape>.Empty, dt, State, ref Status, batch);
+
+        /// <summary>
+        /// A chain along x of <paramref name="springs"/> springs of rest length 1 m and stiffness <paramref name="k"/>
+        /// between particles of mass <paramref name="m"/>, particle 0 at x = −1 (pinned when <paramref name="fixedFirst"/>).
+        /// </summary>
+        public static MassSpringTestBody Chain(int springs, float k, float m, bool fixedFirst, float damping = 0f)
+        {
+            var rest = new float3[springs + 1];
+            var masses = new float[springs + 1];
+            var pinned = new bool[springs + 1];
+            var list = new Spring[springs];
+            for (int i = 0; i <= springs; i++)
+            {
+                rest[i] = new float3(i - 1f, 0f, 0f);
+                masses[i] = m;
+            }
+            for (int e = 0; e < springs; e++)
+                list[e] = new Spring(e, e + 1, 1f, k, damping);
+            pinned[0] = fixedFirst;
+            return new MassSpringTestBody(MassSpringModelData.Create(rest, masses, list, pinned));
+        }
+
+        /// <summary>Parameters for oracle tests: one substep per step, no gravity, no sleep, a generous guard.</summary>
+        public static MassSpringParameters Plain(MassSpringIntegrator integrator, float maxSpeed = 1e6f)
+        {
+            MassSpringParameters p = MassSpringParameters.Default;
+            p.Integrator = integrator;
+            p.Substeps = 1;
+            p.Acceleration = float3.zero;
+            p.SleepSpeed = 0f;
+            p.ParticleRadius = 0f;
+            p.MaxSpeed = maxSpeed;
+            p.CgIterations = 100;
+            p.CgTolerance = 1e-6f;
+            return p;
+        }
+
+        /// <summary>A calibrated box of tetrahedra (cells of <paramref name="cell"/> m) with <paramref name="material"/>.</summary>
+        public static MassSpringModelData Box(int nx, int ny, int nz, float cell, ElasticMaterial material, bool bending = false,
+            bool[] pinned = null)
+        {
+            TetrahedralMesh mesh = MassSpringCalibration.Box(nx, ny, nz, cell);
+            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            return MassSpringModelData.FromMesh(mesh, material, new MassSpringBuildSettings { BendingSprings = bending }, issues, out _, pinned);
+        }
+    }
+}
