@@ -140,5 +140,27 @@ namespace SoftBodyDynamics.Solvers
         /// Use more substeps, softer springs, or the ImplicitEuler or Xpbd integrator.
         /// </summary>
         MassSpringStepAboveStableLimit = 129,
+
+        // ---- finite-element model (FemModelData.Create)
+
+        /// <summary>The tetrahedral mesh has no nodes or no tetrahedra.</summary>
+        FemMeshEmpty = 140,
+        /// <summary>A tetrahedron refers to a node that does not exist, or repeats a node. Index: the tetrahedron.</summary>
+        FemTetrahedronNodeInvalid = 141,
+        /// <summary>A tetrahedron has zero volume at rest (its four nodes are coplanar, or a position is not finite). Index: the tetrahedron.</summary>
+        FemTetrahedronDegenerate = 142,
+        /// <summary>A tetrahedron is inverted at rest (negative signed volume: nodes in the wrong order). Index: the tetrahedron.</summary>
+        FemTetrahedronInverted = 143,
+        /// <summary>
+        /// Warning: a sliver tetrahedron, quality 6√2 V / l_rms³ below <see cref="FemModelData.SliverQuality"/> (1 for a
+        /// regular tetrahedron): it stiffens the body and shortens the explicit stable step. Index: the tetrahedron.
+        /// </summary>
+        FemTetrahedronSliver = 144,
+        /// <summary>Warning: a node is used by no tetrahedron; it has no stiffness and is held in place (pinned). Index: the node.</summary>
+        FemNodeUnused = 145,
+        /// <summary>The material is invalid (E ≤ 0, ν outside [0, 0.5), ρ ≤ 0 or ζ &lt; 0, or a value not finite).</summary>
+        FemMaterialInvalid = 146,
+        /// <summary>The pinned-node list's length differs from the node count.</summary>
+        FemPinnedCountMismatch = 147,
     }
 }

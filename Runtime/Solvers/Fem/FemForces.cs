@@ -1,0 +1,90 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The element passes of the finite-element step, written as range functions (start, end) so a job can run them
+    /// per batch: each element writes its four nodal values to its slots (4e + corner), and
+    /// <see cref="ElementIncidence.Gather"/> sums them per node in a fixed order. The result has the same bits for any
+    /// split of either pass among workers and any order of the batches.
+    /// </summary>
+    public static class FemForces
+    {
+        /// <summary>
+        /// Elastic plus damping forces of elements [<paramref name="start"/>, <paramref name="end"/>) into their slots:
+        /// P(F) of the model (co-rotational: the element's rotation R is first re-extracted from F, warm-started at
+        /// <paramref name="rotations"/>[e], which it updates), plus the stiffness-proportional damping stress of the
+        /// velocities <paramref name="v"/> with coefficient <paramref name="beta"/> (s) (co-rotational: β K_R;
+        /// Neo-Hookean: <see cref="FemElasticity.StrainRateDampingStress"/>); nodal forces H = −V P Dm⁻ᵀ. Returns the
+        /// number of elements of the range with det F ≤ 0.
+        /// </summary>
+        public static int Elastic(in FemModel model, FemMaterialModel materialModel, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v,
+            float beta, Span<quaternion> rotations, int rotationIterations, Span<float3> slots, int start, int end)
+        {
+            float mu = model.Mu, lambda = model.Lambda;
+            float lambdaSnh = FemElasticity.NeoHookeanLambda(mu, lambda);
+            bool damped = beta > 0f;
+            int inverted = 0;
+            for (int e = start; e < end; e++)
+            {
+                TetElement element = model.Elements[e];
+                int4 n = element.Nodes;
+                float3x3 f = FemElasticity.DeformationGradient(x[n.x], x[n.y], x[n.z], x[n.w], element.InverseRestShape);
+                if (!(math.determinant(f) > 0f))
+                    inverted++;
+                float3x3 p;
+                if (materialModel == FemMaterialModel.CoRotational)
+                {
+                    quaternion q = rotations[e];
+                    RotationExtraction.Extract(f, ref q, rotationIterations);
+                    rotations[e] = q;
+                    var r = new float3x3(q);
+                    p = FemElasticity.CoRotationalStress(f, r, mu, lambda);
+                    if (damped)
+                    {
+                        float3x3 fDot = FemElasticity.DeformationGradient(v[n.x], v[n.y], v[n.z], v[n.w], element.InverseRestShape);
+                        p += beta * FemElasticity.WarpedStressDifferential(r, fDot, mu, lambda);
+                    }
+                }
+                else
+                {
+                    p = FemElasticity.NeoHookeanStress(f, mu, lambdaSnh);
+                    if (damped)
+                    {
+                        float3x3 fDot = FemElasticity.DeformationGradient(v[n.x], v[n.y], v[n.z], v[n.w], element.InverseRestShape);
+                        p += FemElasticity.StrainRateDampingStress(f, fDot, beta, mu, lambda);
+                    }
+                }
+                FemElasticity.NodalForces(p, element, slots.Slice(4 * e, 4));
+            }
+            return inverted;
+        }
+
+        /// <summary>
+        /// −K_R u of elements [<paramref name="start"/>, <paramref name="end"/>) into their slots: the force change of a
+        /// displacement <paramref name="u"/> under the warped stiffness K_R = R K₀ Rᵀ with the rotations of
+        /// <paramref name="rotations"/> held fixed (Müller &amp; Gross 2004). Symmetric positive semi-definite.
+        /// </summary>
+        public static void WarpedStiffness(in FemModel model, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> u,
+            Span<float3> slots, int start, int end)
+        {
+            float mu = model.Mu, lambda = model.Lambda;
+            for (int e = start; e < end; e++)
+            {
+                TetElement element = model.Elements[e];
+                int4 n = element.Nodes;
+                float3x3 du = FemElasticity.DeformationGradient(u[n.x], u[n.y], u[n.z], u[n.w], element.InverseRestShape);
+                var r = new float3x3(rotations[e]);
+                FemElasticity.NodalForces(FemElasticity.WarpedStressDifferential(r, du, mu, lambda), element, slots.Slice(4 * e, 4));
+            }
+        }
+
+        /// <summary>resultᵢ = Σ of node i's slots for nodes [<paramref name="start"/>, <paramref name="end"/>) (overwrites).</summary>
+        public static void Gather(in FemModel model, ReadOnlySpan<float3> slots, Span<float3> result, int start, int end)
+        {
+            result.Slice(start, end - start).Clear();
+            ElementIncidence.Gather(model.IncidenceOffsets, model.IncidenceSlots, slots, start, end, result);
+        }
+    }
+}

@@ -1,0 +1,72 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The immutable part of a finite-element body as spans (a blob in ECS): rest shape, lumped masses, elements,
+    /// their incidence and colouring, and the material. Obtained from <see cref="FemModelData.AsModel"/>.
+    /// </summary>
+    public readonly ref struct FemModel
+    {
+        /// <summary>Rest positions of the nodes (m, body space).</summary>
+        public readonly ReadOnlySpan<float3> RestPositions;
+        /// <summary>Lumped node masses mᵢ = ρ Σ V_t / 4 over the node's tetrahedra (kg), all &gt; 0.</summary>
+        public readonly ReadOnlySpan<float> Masses;
+        /// <summary>Inverse masses wᵢ (1/kg), 0 for a pinned node.</summary>
+        public readonly ReadOnlySpan<float> InverseMasses;
+        /// <summary>The tetrahedra.</summary>
+        public readonly ReadOnlySpan<TetElement> Elements;
+        /// <summary><see cref="ElementIncidence.Offsets"/> of the elements' corners (slot = 4 × element + corner).</summary>
+        public readonly ReadOnlySpan<int> IncidenceOffsets;
+        /// <summary><see cref="ElementIncidence.Slots"/> of the elements' corners.</summary>
+        public readonly ReadOnlySpan<int> IncidenceSlots;
+        /// <summary><see cref="GraphColoring.ColorOffsets"/> of the elements.</summary>
+        public readonly ReadOnlySpan<int> ColorOffsets;
+        /// <summary><see cref="GraphColoring.Elements"/>: element indices grouped by colour.</summary>
+        public readonly ReadOnlySpan<int> ColorElements;
+        /// <summary>
+        /// kᵢ = Σ_t V_t (μ + (μ + λ)/3) |∇Nᵢ|² (N/m): one third of the trace of node i's diagonal block of the rest
+        /// stiffness K₀, invariant under the element rotations (the Jacobi preconditioner of the implicit solve).
+        /// </summary>
+        public readonly ReadOnlySpan<float> StiffnessDiagonal;
+        /// <summary>Centre of mass of the rest shape (m, body space).</summary>
+        public readonly float3 RestCenter;
+        /// <summary>Shear modulus μ (Pa).</summary>
+        public readonly float Mu;
+        /// <summary>First Lamé parameter λ (Pa) of linear elasticity (the Neo-Hookean model uses λ + μ, see <see cref="FemElasticity.NeoHookeanLambda"/>).</summary>
+        public readonly float Lambda;
+        /// <summary>Damping ratio ζ of the material at the reference frequency (dimensionless).</summary>
+        public readonly float DampingRatio;
+        /// <summary>Default reference frequency ω_ref = π √(μ/ρ) / L (rad/s), L the longest side of the rest bounds: the damping frequency when the parameters give none.</summary>
+        public readonly float DefaultDampingFrequency;
+
+        public FemModel(ReadOnlySpan<float3> restPositions, ReadOnlySpan<float> masses, ReadOnlySpan<float> inverseMasses,
+            ReadOnlySpan<TetElement> elements, ReadOnlySpan<int> incidenceOffsets, ReadOnlySpan<int> incidenceSlots,
+            ReadOnlySpan<int> colorOffsets, ReadOnlySpan<int> colorElements, ReadOnlySpan<float> stiffnessDiagonal,
+            float3 restCenter, float mu, float lambda, float dampingRatio, float defaultDampingFrequency)
+        {
+            RestPositions = restPositions;
+            Masses = masses;
+            InverseMasses = inverseMasses;
+            Elements = elements;
+            IncidenceOffsets = incidenceOffsets;
+            IncidenceSlots = incidenceSlots;
+            ColorOffsets = colorOffsets;
+            ColorElements = colorElements;
+            StiffnessDiagonal = stiffnessDiagonal;
+            RestCenter = restCenter;
+            Mu = mu;
+            Lambda = lambda;
+            DampingRatio = dampingRatio;
+            DefaultDampingFrequency = defaultDampingFrequency;
+        }
+
+        /// <summary>Number of nodes (particles).</summary>
+        public int ParticleCount => RestPositions.Length;
+        /// <summary>Number of tetrahedra.</summary>
+        public int ElementCount => Elements.Length;
+        /// <summary>Number of element colours.</summary>
+        public int ColorCount => ColorOffsets.Length - 1;
+    }
+}

@@ -1,0 +1,192 @@
+using System;
+using System.Collections.Generic;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The baked finite-element model of a tetrahedral mesh (managed arrays; built once). <see cref="Create"/> checks
+    /// the mesh and material and reports every problem with a specific <see cref="SoftBodyIssueCode"/>;
+    /// <see cref="AsModel"/> gives the spans the step reads.
+    /// </summary>
+    public sealed class FemModelData
+    {
+        /// <summary>
+        /// Quality q = 6√2 V / l_rms³ (l_rms the root mean square of the six edge lengths) below which a tetrahedron is
+        /// reported as a sliver. q = 1 for a regular tetrahedron, 0.66 for the six tetrahedra of a split cube, → 0 for a flat one.
+        /// </summary>
+        public const float SliverQuality = 0.1f;
+
+        /// <summary>|q| at or below which a tetrahedron counts as flat (zero volume): float32 round-off of the volume is ~10⁻⁷ l³.</summary>
+        public const float DegenerateQuality = 1e-5f;
+
+        /// <summary>Rest positions (m).</summary>
+        public float3[] RestPositions;
+        /// <summary>Lumped masses (kg).</summary>
+        public float[] Masses;
+        /// <summary>Inverse masses (1/kg), 0 = pinned.</summary>
+        public float[] InverseMasses;
+        /// <summary>Elements.</summary>
+        public TetElement[] Elements;
+        /// <summary>Incidence of the element corners (4 per element).</summary>
+        public ElementIncidence Incidence;
+        /// <summary>Colouring of the elements.</summary>
+        public GraphColoring Coloring;
+        /// <summary>See <see cref="FemModel.StiffnessDiagonal"/> (N/m).</summary>
+        public float[] StiffnessDiagonal;
+        /// <summary>Rest centre of mass (m).</summary>
+        public float3 RestCenter;
+        /// <summary>Shear modulus μ (Pa).</summary>
+        public float Mu;
+        /// <summary>Lamé λ (Pa).</summary>
+        public float Lambda;
+        /// <summary>Damping ratio ζ.</summary>
+        public float DampingRatio;
+        /// <summary>See <see cref="FemModel.DefaultDampingFrequency"/> (rad/s).</summary>
+        public float DefaultDampingFrequency;
+
+        /// <summary>The spans of the model.</summary>
+        public FemModel AsModel() => new FemModel(RestPositions, Masses, InverseMasses, Elements, Incidence.Offsets, Incidence.Slots,
+            Coloring.ColorOffsets, Coloring.Elements, StiffnessDiagonal, RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency);
+
+        /// <summary>Quality 6√2 V / l_rms³ of a tetrahedron (dimensionless, signed like its volume): 1 = regular.</summary>
+        public static float Quality(float3 a, float3 b, float3 c, float3 d)
+        {
+            float volume = TetrahedralMesh.SignedVolume(a, b, c, d);
+            float l2 = (math.distancesq(a, b) + math.distancesq(a, c) + math.distancesq(a, d) + math.distancesq(b, c)
+                        + math.distancesq(b, d) + math.distancesq(c, d)) / 6f;
+            float lrms3 = l2 * math.sqrt(l2);
+            return lrms3 > 0f ? 6f * math.sqrt(2f) * volume / lrms3 : 0f;
+        }
+
+        /// <summary>
+        /// Bakes <paramref name="mesh"/> with <paramref name="material"/>. Lumped masses mᵢ = ρ Σ V_t / 4, inverse masses
+        /// (0 where <paramref name="pinned"/> is true; empty = nothing pinned), Dm⁻¹ and volume per tetrahedron, incidence,
+        /// colouring, Lamé parameters. Appends issues to <paramref name="issues"/>; returns null when any is an error.
+        /// </summary>
+        public static FemModelData Create(TetrahedralMesh mesh, in ElasticMaterial material, ReadOnlySpan<bool> pinned,
+            List<SoftBodyIssue> issues)
+        {
+            int start = issues.Count;
+            if (!material.IsValid)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemMaterialInvalid, -1,
+                    $"The material is invalid (E = {material.YoungsModulus} Pa, ν = {material.PoissonRatio}, ρ = {material.Density} kg/m³, " +
+                    $"ζ = {material.DampingRatio}): use E > 0, 0 ≤ ν < 0.5 (0.5 is incompressible, which linear tetrahedra cannot represent), ρ > 0, ζ ≥ 0."));
+            if (mesh == null || mesh.Positions == null || mesh.Tetrahedra == null || mesh.NodeCount == 0 || mesh.TetrahedronCount == 0)
+            {
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemMeshEmpty, -1, "The tetrahedral mesh has no nodes or no tetrahedra."));
+                return null;
+            }
+            int n = mesh.NodeCount;
+            if (pinned.Length != 0 && pinned.Length != n)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemPinnedCountMismatch, -1,
+                    $"The pinned-node list has {pinned.Length} entries but the mesh has {n} nodes."));
+
+            var used = new bool[n];
+            for (int t = 0; t < mesh.TetrahedronCount; t++)
+            {
+                int4 nodes = mesh.Tetrahedra[t];
+                bool valid = true;
+                for (int k = 0; k < 4; k++)
+                {
+                    valid &= (uint)nodes[k] < (uint)n;
+                    for (int j = 0; j < k; j++)
+                        valid &= nodes[j] != nodes[k];
+                }
+                if (!valid)
+                {
+                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronNodeInvalid, t,
+                        $"Tetrahedron {t} has nodes {nodes}: each must be a distinct node index below {n}."));
+                    continue;
+                }
+                for (int k = 0; k < 4; k++)
+                    used[nodes[k]] = true;
+                float3 a = mesh.Positions[nodes.x], b = mesh.Positions[nodes.y], c = mesh.Positions[nodes.z], d = mesh.Positions[nodes.w];
+                float q = Quality(a, b, c, d);
+                if (!(math.abs(q) > DegenerateQuality))
+                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronDegenerate, t,
+                        $"Tetrahedron {t} (nodes {nodes}) has zero volume at rest (quality {q}): its nodes are coplanar or not finite. Remove it or fix the tetrahedralisation."));
+                else if (q < 0f)
+                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronInverted, t,
+                        $"Tetrahedron {t} (nodes {nodes}) is inverted at rest (volume {TetrahedralMesh.SignedVolume(a, b, c, d)} m³): swap two of its nodes."));
+                else if (q < SliverQuality)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemTetrahedronSliver, t,
+                        $"Tetrahedron {t} (nodes {nodes}) is a sliver (quality 6√2·V/l_rms³ = {q:G3} < {SliverQuality}): it makes the body stiffer and the explicit stable step shorter."));
+            }
+            for (int i = 0; i < n; i++)
+                if (!used[i])
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemNodeUnused, i,
+                        $"Node {i} belongs to no tetrahedron: it has no mass or stiffness of its own and is held in place."));
+            if (SoftBodyIssue.AnyError(issues, start))
+                return null;
+
+            var data = new FemModelData
+            {
+                RestPositions = (float3[])mesh.Positions.Clone(),
+                Masses = new float[n],
+                InverseMasses = new float[n],
+                Elements = new TetElement[mesh.TetrahedronCount],
+                StiffnessDiagonal = new float[n],
+                Mu = material.LameMu,
+                Lambda = material.LameLambda,
+                DampingRatio = material.DampingRatio,
+            };
+            var corners = new int[4 * mesh.TetrahedronCount];
+            float diagonalFactor = data.Mu + (data.Mu + data.Lambda) / 3f;
+            for (int t = 0; t < mesh.TetrahedronCount; t++)
+            {
+                int4 nodes = mesh.Tetrahedra[t];
+                float3 x0 = mesh.Positions[nodes.x];
+                var dm = new float3x3(mesh.Positions[nodes.y] - x0, mesh.Positions[nodes.z] - x0, mesh.Positions[nodes.w] - x0);
+                float volume = math.determinant(dm) / 6f;
+                float3x3 dmInv = math.inverse(dm);
+                data.Elements[t] = new TetElement { Nodes = nodes, InverseRestShape = dmInv, RestVolume = volume };
+                // Shape-function gradients: ∇N₁..₃ = rows of Dm⁻¹, ∇N₀ = −Σ.
+                float3x3 g = math.transpose(dmInv);
+                float3 g0 = -(g.c0 + g.c1 + g.c2);
+                float quarter = material.Density * volume / 4f;
+                for (int k = 0; k < 4; k++)
+                {
+                    corners[4 * t + k] = nodes[k];
+                    data.Masses[nodes[k]] += quarter;
+                    float3 gk = k == 0 ? g0 : g[k - 1];
+                    data.StiffnessDiagonal[nodes[k]] += volume * diagonalFactor * math.lengthsq(gk);
+                }
+            }
+            float massSum = 0f;
+            int massCount = 0;
+            for (int i = 0; i < n; i++)
+                if (used[i])
+                {
+                    massSum += data.Masses[i];
+                    massCount++;
+                }
+            float meanMass = massSum / massCount;
+            float3 center = float3.zero;
+            float3 lo = mesh.Positions[0], hi = mesh.Positions[0];
+            for (int i = 0; i < n; i++)
+            {
+                // An unused node gets the mean mass (the shared step needs mᵢ > 0) and is pinned.
+                if (!used[i])
+                    data.Masses[i] = meanMass;
+                bool pin = !used[i] || (pinned.Length == n && pinned[i]);
+                data.InverseMasses[i] = pin ? 0f : 1f / data.Masses[i];
+                center += data.Masses[i] * mesh.Positions[i];
+                lo = math.min(lo, mesh.Positions[i]);
+                hi = math.max(hi, mesh.Positions[i]);
+            }
+            float totalMass = 0f;
+            for (int i = 0; i < n; i++)
+                totalMass += data.Masses[i];
+            data.RestCenter = center / totalMass;
+            data.DefaultDampingFrequency = DefaultReferenceFrequency(material, math.cmax(hi - lo));
+            data.Incidence = ElementIncidence.Build(corners, 4, n);
+            data.Coloring = GraphColoring.Build(corners, 4, n);
+            return data;
+        }
+
+        /// <summary>ω_ref = π √(μ/ρ) / L (rad/s): the lowest bending/shear mode of a body of longest size L, roughly (the mass-spring method's rule).</summary>
+        public static float DefaultReferenceFrequency(in ElasticMaterial material, float longestSide) =>
+            longestSide > 0f ? math.PI * material.ShearWaveSpeed / longestSide : 0f;
+    }
+}

@@ -1,0 +1,141 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Linear tetrahedral finite elements as the solve stage of <see cref="ParticleBodyStep"/>: each substep adds the
+    /// elements' internal forces to the velocities with the chosen integrator (<see cref="FemIntegrator"/>). Holds
+    /// pointers to the model's and the state's arrays (the caller keeps them pinned for the step:
+    /// <see cref="FemSolver.Step"/> does) and the counters of the step.
+    /// </summary>
+    public unsafe struct FemSolveStage : IParticleSolveStage
+    {
+        readonly float3* m_Rest;
+        readonly float* m_Masses;
+        readonly float* m_InverseMasses;
+        readonly TetElement* m_Elements;
+        readonly int* m_IncidenceOffsets;
+        readonly int* m_IncidenceSlots;
+        readonly int* m_ColorOffsets;
+        readonly int* m_ColorElements;
+        readonly float* m_StiffnessDiagonal;
+        readonly quaternion* m_Rotations;
+        readonly float3* m_Work;
+        readonly float3* m_Slots;
+        readonly float3* m_Multipliers;
+        readonly int m_ParticleCount, m_ElementCount, m_ColorCount;
+        readonly float3 m_RestCenter;
+        readonly float m_Mu, m_Lambda, m_DampingRatio, m_DefaultDampingFrequency;
+        readonly FemParameters m_Parameters;
+        readonly FemIntegrator m_Integrator;
+        readonly float m_Beta;
+
+        /// <summary>Most CG iterations of any implicit substep of the step.</summary>
+        public int MaxCgIterations;
+        /// <summary>Every implicit substep of the step converged.</summary>
+        public bool CgConverged;
+        /// <summary>Elements with det F ≤ 0 at the start of the last substep (explicit and implicit).</summary>
+        public int InvertedElements;
+
+        /// <summary>The stage over pinned arrays; see <see cref="FemSolver.Step"/> for how they are obtained.</summary>
+        public FemSolveStage(float3* rest, float* masses, float* inverseMasses, TetElement* elements, int* incidenceOffsets,
+            int* incidenceSlots, int* colorOffsets, int* colorElements, float* stiffnessDiagonal, quaternion* rotations,
+            float3* work, float3* slots, float3* multipliers, in FemModel model, in FemParameters sanitizedParameters,
+            FemIntegrator integrator, float beta)
+        {
+            m_Rest = rest;
+            m_Masses = masses;
+            m_InverseMasses = inverseMasses;
+            m_Elements = elements;
+            m_IncidenceOffsets = incidenceOffsets;
+            m_IncidenceSlots = incidenceSlots;
+            m_ColorOffsets = colorOffsets;
+            m_ColorElements = colorElements;
+            m_StiffnessDiagonal = stiffnessDiagonal;
+            m_Rotations = rotations;
+            m_Work = work;
+            m_Slots = slots;
+            m_Multipliers = multipliers;
+            m_ParticleCount = model.ParticleCount;
+            m_ElementCount = model.ElementCount;
+            m_ColorCount = model.ColorCount;
+            m_RestCenter = model.RestCenter;
+            m_Mu = model.Mu;
+            m_Lambda = model.Lambda;
+            m_DampingRatio = model.DampingRatio;
+            m_DefaultDampingFrequency = model.DefaultDampingFrequency;
+            m_Parameters = sanitizedParameters;
+            m_Integrator = integrator;
+            m_Beta = beta;
+            MaxCgIterations = 0;
+            CgConverged = true;
+            InvertedElements = 0;
+        }
+
+        FemModel Model => new FemModel(new ReadOnlySpan<float3>(m_Rest, m_ParticleCount), new ReadOnlySpan<float>(m_Masses, m_ParticleCount),
+            new ReadOnlySpan<float>(m_InverseMasses, m_ParticleCount), new ReadOnlySpan<TetElement>(m_Elements, m_ElementCount),
+            new ReadOnlySpan<int>(m_IncidenceOffsets, m_ParticleCount + 1), new ReadOnlySpan<int>(m_IncidenceSlots, 4 * m_ElementCount),
+            new ReadOnlySpan<int>(m_ColorOffsets, m_ColorCount + 1), new ReadOnlySpan<int>(m_ColorElements, m_ElementCount),
+            new ReadOnlySpan<float>(m_StiffnessDiagonal, m_ParticleCount), m_RestCenter, m_Mu, m_Lambda, m_DampingRatio,
+            m_DefaultDampingFrequency);
+
+        Span<quaternion> Rotations => new Span<quaternion>(m_Rotations, m_ElementCount);
+
+        /// <inheritdoc/>
+        public void Solve(in ParticleBody body, in ParticleStepConstants constants, in RigidFrame frame, bool lastSubstep)
+        {
+            FemModel model = Model;
+            float h = constants.H;
+            var x = body.Positions;
+            var v = body.Velocities;
+            var slots = new Span<float3>(m_Slots, 4 * m_ElementCount);
+            ReadOnlySpan<float> w = model.InverseMasses;
+            switch (m_Integrator)
+            {
+                case FemIntegrator.ImplicitEuler:
+                {
+                    int iterations = FemImplicitEuler.Solve(model, x, v, Rotations, m_Parameters.RotationIterations, slots, body.Scratch,
+                        new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), h, m_Beta, m_Parameters.CgIterations,
+                        m_Parameters.CgTolerance, out bool converged, out InvertedElements);
+                    MaxCgIterations = math.max(MaxCgIterations, iterations);
+                    CgConverged &= converged;
+                    break;
+                }
+                case FemIntegrator.Xpbd:
+                {
+                    // Predict p = x + h v, project colour by colour, v = (p − x) / h.
+                    Span<float3> p = body.Scratch;
+                    for (int i = 0; i < x.Length; i++)
+                        p[i] = w[i] > 0f ? x[i] + h * v[i] : x[i];
+                    var multipliers = new Span<float3>(m_Multipliers, m_ElementCount);
+                    multipliers.Clear();
+                    for (int it = 0; it < m_Parameters.Iterations; it++)
+                        for (int c = 0; c < m_ColorCount; c++)
+                            FemXpbd.Project(model, model.ColorElements, x, p, multipliers, h, m_Beta, model.ColorOffsets[c], model.ColorOffsets[c + 1]);
+                    float invH = 1f / h;
+                    for (int i = 0; i < x.Length; i++)
+                        v[i] = (p[i] - x[i]) * invH;
+                    break;
+                }
+                default:
+                {
+                    // Symplectic Euler: v += h M⁻¹ (f_elastic + f_damping) at x.
+                    InvertedElements = FemForces.Elastic(model, m_Parameters.Model, x, v, m_Beta, Rotations, m_Parameters.RotationIterations,
+                        slots, 0, m_ElementCount);
+                    Span<float3> f = body.Scratch;
+                    FemForces.Gather(model, slots, f, 0, m_ParticleCount);
+                    for (int i = 0; i < x.Length; i++)
+                        v[i] += h * w[i] * f[i];
+                    break;
+                }
+            }
+        }
+
+        /// <summary>The body is back at its rest shape rotated by <paramref name="rotation"/>: every element's rotation restarts there.</summary>
+        public void OnReset(quaternion rotation)
+        {
+            Rotations.Fill(rotation);
+        }
+    }
+}

@@ -1,0 +1,66 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The mutable part of one finite-element body (dynamic buffers in ECS) and the scratch its step needs. Views
+    /// only. Per-particle spans have the model's node count; per-element spans its element count.
+    /// <see cref="FemSolver.Initialize"/> uses no scratch: the scratch spans may be empty there.
+    /// </summary>
+    public readonly ref struct FemState
+    {
+        /// <summary>Node positions xᵢ (m, relative to <see cref="SoftBodyStatus.Origin"/>).</summary>
+        public readonly Span<float3> Positions;
+        /// <summary>Node velocities vᵢ (m/s).</summary>
+        public readonly Span<float3> Velocities;
+        /// <summary>Per element: its rotation R (co-rotational model), the warm start of the next extraction. Kept between steps.</summary>
+        public readonly Span<quaternion> Rotations;
+        /// <summary>Scratch: predicted positions of the shared step.</summary>
+        public readonly Span<float3> Predicted;
+        /// <summary>Scratch: contact normals of the shared step.</summary>
+        public readonly Span<float3> ContactNormals;
+        /// <summary>Scratch of the stage, one float3 per particle (forces, right-hand side, XPBD positions).</summary>
+        public readonly Span<float3> Forces;
+        /// <summary>Scratch of the implicit solve: <see cref="WorkVectors"/> × particles (Δv, r, z, p, q of conjugate gradients).</summary>
+        public readonly Span<float3> Work;
+        /// <summary>Scratch: per element corner value (4 per element, slot = 4e + corner), gathered per node.</summary>
+        public readonly Span<float3> Slots;
+        /// <summary>Scratch: per element XPBD multipliers (x = λ_D, y = λ_H) of the substep.</summary>
+        public readonly Span<float3> Multipliers;
+
+        /// <summary>Vectors of the conjugate-gradient solve.</summary>
+        public const int WorkVectors = 5;
+        /// <summary>Scratch float3s per particle: predicted positions, contact normals, forces, and <see cref="WorkVectors"/>.</summary>
+        public const int ScratchPerParticle = 3 + WorkVectors;
+        /// <summary>Scratch float3s per element: 4 corner slots and the multipliers.</summary>
+        public const int ScratchPerElement = 5;
+
+        /// <summary>
+        /// The state over its buffers, one particle scratch of <see cref="ScratchPerParticle"/> × particles and one element
+        /// scratch of <see cref="ScratchPerElement"/> × elements (the layout the ECS job and the benchmarks share).
+        /// </summary>
+        public static FemState FromScratch(Span<float3> positions, Span<float3> velocities, Span<quaternion> rotations,
+            Span<float3> particleScratch, Span<float3> elementScratch)
+        {
+            int n = positions.Length, e = rotations.Length;
+            return new FemState(positions, velocities, rotations, particleScratch.Slice(0, n), particleScratch.Slice(n, n),
+                particleScratch.Slice(2 * n, n), particleScratch.Slice(3 * n, WorkVectors * n),
+                elementScratch.Slice(0, 4 * e), elementScratch.Slice(4 * e, e));
+        }
+
+        public FemState(Span<float3> positions, Span<float3> velocities, Span<quaternion> rotations, Span<float3> predicted,
+            Span<float3> contactNormals, Span<float3> forces, Span<float3> work, Span<float3> slots, Span<float3> multipliers)
+        {
+            Positions = positions;
+            Velocities = velocities;
+            Rotations = rotations;
+            Predicted = predicted;
+            ContactNormals = contactNormals;
+            Forces = forces;
+            Work = work;
+            Slots = slots;
+            Multipliers = multipliers;
+        }
+    }
+}
