@@ -1,0 +1,146 @@
+using System;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Implicit dynamics M ü + f_int(u) = f_ext by Newmark's average-acceleration rule (β = 1/4, γ = 1/2, the
+    /// trapezoidal rule: second order, unconditionally stable and energy conserving for linear problems):
+    /// <code>
+    ///   a₁ = 4/h² (u₁ − u₀) − 4/h v₀ − a₀        v₁ = v₀ + h/2 (a₀ + a₁)
+    ///   r(u₁) = M a₁ + f_int(u₁) − f_ext = 0,  Newton with (K(u₁) + 4/h² M) Δu = −r
+    /// </code>
+    /// each step converged to ‖r‖₂ ≤ <see cref="Tolerance"/>·max(‖f_ext‖, ‖f_int‖, ‖M a‖) on the free degrees of freedom
+    /// (fixed degrees of freedom stay at their values, zero velocity and acceleration). Consistent mass, no damping.
+    /// The start acceleration solves M a₀ = f_ext − f_int(u₀).
+    /// </summary>
+    public sealed class FemNewmark
+    {
+        /// <summary>Relative residual per step (default 1e-9).</summary>
+        public double Tolerance = 1e-9;
+        /// <summary>Newton iterations per step before the step is reported unconverged (default 20).</summary>
+        public int MaxIterations = 20;
+
+        /// <summary>Displacement (m), velocity (m/s), acceleration (m/s²), every degree of freedom.</summary>
+        public readonly double[] U, V, A;
+        /// <summary>The time step h (s).</summary>
+        public readonly double TimeStep;
+        /// <summary>Time integrated (s).</summary>
+        public double Time { get; private set; }
+
+        readonly FemModel m_Model;
+        readonly FemCsrMatrix m_M, m_K, m_Keff;
+        readonly FemBandSolver m_Solver;
+        readonly double[] m_Fext, m_Fint, m_R, m_Du, m_Af, m_Ma, m_U0;
+
+        /// <param name="model">The discretised body.</param>
+        /// <param name="externalForce">f_ext (N), every degree of freedom, constant in time.</param>
+        /// <param name="timeStep">h (s), &gt; 0.</param>
+        /// <param name="initialDisplacement">u₀ (m), every degree of freedom, or null for the rest shape; v₀ = 0.</param>
+        public FemNewmark(FemModel model, double[] externalForce, double timeStep, double[] initialDisplacement = null)
+        {
+            if (!(timeStep > 0))
+                throw new ArgumentOutOfRangeException(nameof(timeStep));
+            m_Model = model;
+            TimeStep = timeStep;
+            int dofs = model.Mesh.DofCount, n = model.FreeCount;
+            U = initialDisplacement != null ? (double[])initialDisplacement.Clone() : new double[dofs];
+            V = new double[dofs];
+            A = new double[dofs];
+            m_M = model.MassMatrix();
+            m_K = model.NewMatrix();
+            m_Keff = model.NewMatrix();
+            m_Solver = new FemBandSolver(n, model.Pattern.Bandwidth);
+            m_Fext = model.Gather(externalForce);
+            m_Fint = new double[dofs];
+            m_R = new double[n];
+            m_Du = new double[n];
+            m_Af = new double[n];
+            m_Ma = new double[n];
+            m_U0 = new double[n];
+            if (double.IsNaN(model.InternalForce(U, m_Fint, null)))
+                throw new ArgumentException("The initial displacement has an undefined energy.", nameof(initialDisplacement));
+            for (int k = 0; k < n; k++)
+                m_R[k] = m_Fext[k] - m_Fint[model.FreeDofs[k]];
+            if (!m_Solver.Factor(m_M))
+                throw new InvalidOperationException("Singular mass matrix.");
+            m_Solver.Solve(m_R, m_Af);
+            for (int k = 0; k < n; k++)
+                A[model.FreeDofs[k]] = m_Af[k];
+        }
+
+        /// <summary>Advances one step h; returns the Newton report of the step.</summary>
+        public FemSolveReport Step()
+        {
+            FemModel model = m_Model;
+            int n = model.FreeCount;
+            int[] free = model.FreeDofs;
+            double h = TimeStep, c0 = 4 / (h * h), c1 = 4 / h;
+            for (int k = 0; k < n; k++)
+                m_U0[k] = U[free[k]];
+            // Predictor: the step with a₁ = a₀, u₁ = u₀ + h v₀ + h²/2 a₀.
+            for (int k = 0; k < n; k++)
+                U[free[k]] += h * V[free[k]] + 0.5 * h * h * A[free[k]];
+            var report = new FemSolveReport { Steps = 1 };
+            double fextNorm = FemStaticSolver.Norm(m_Fext);
+            for (int it = 0; it <= MaxIterations; it++)
+            {
+                for (int k = 0; k < n; k++)
+                    m_Af[k] = c0 * (U[free[k]] - m_U0[k]) - c1 * V[free[k]] - A[free[k]];
+                m_M.Multiply(m_Af, m_Ma);
+                bool last = it == MaxIterations;
+                double energy = model.InternalForce(U, m_Fint, last ? null : m_K);
+                if (double.IsNaN(energy))
+                    break;
+                double fn = 0;
+                for (int k = 0; k < n; k++)
+                {
+                    double fi = m_Fint[free[k]];
+                    fn += fi * fi;
+                    m_R[k] = m_Ma[k] + fi - m_Fext[k];
+                }
+                double scale = Math.Max(fextNorm, Math.Max(Math.Sqrt(fn), FemStaticSolver.Norm(m_Ma)));
+                report.RelativeResidual = FemStaticSolver.Norm(m_R) / (scale > 0 ? scale : 1);
+                if (report.RelativeResidual <= Tolerance)
+                {
+                    report.Converged = true;
+                    break;
+                }
+                if (last)
+                    break;
+                report.NewtonIterations++;
+                m_Keff.SetSum(m_K, c0, m_M);
+                if (!m_Solver.Factor(m_Keff))
+                    break;
+                m_Solver.Solve(m_R, m_Du);
+                for (int k = 0; k < n; k++)
+                    U[free[k]] -= m_Du[k];
+            }
+            for (int k = 0; k < n; k++)
+            {
+                int d = free[k];
+                double a1 = c0 * (U[d] - m_U0[k]) - c1 * V[d] - A[d];
+                V[d] += 0.5 * h * (A[d] + a1);
+                A[d] = a1;
+            }
+            Time += h;
+            return report;
+        }
+
+        /// <summary>Kinetic energy ½ vᵀ M v (J), stored energy ∫ Ψ dV (J) and the work potential −f_extᵀ u (J).</summary>
+        public (double Kinetic, double Stored, double Potential) Energies()
+        {
+            FemModel model = m_Model;
+            int n = model.FreeCount;
+            double[] v = model.Gather(V);
+            var mv = new double[n];
+            m_M.Multiply(v, mv);
+            double kinetic = 0, potential = 0;
+            for (int k = 0; k < n; k++)
+            {
+                kinetic += 0.5 * v[k] * mv[k];
+                potential -= m_Fext[k] * U[model.FreeDofs[k]];
+            }
+            return (kinetic, model.InternalForce(U, new double[model.Mesh.DofCount], null), potential);
+        }
+    }
+}
