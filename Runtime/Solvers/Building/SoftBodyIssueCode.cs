@@ -166,28 +166,28 @@ namespace SoftBodyDynamics.Solvers
         // ---- tetrahedralisation (LatticeTetrahedralizer) and tetrahedral meshes (TetrahedralMeshChecks)
 
         /// <summary>TetrahedralizationSettings.Resolution outside 1..128.</summary>
-        TetResolutionOutOfRange = 120,
+        TetResolutionOutOfRange = 160,
         /// <summary>TetrahedralizationSettings.MaxNodes is not positive.</summary>
-        MaxNodesInvalid = 121,
+        MaxNodesInvalid = 161,
         /// <summary>The volume mesh would have more nodes than TetrahedralizationSettings.MaxNodes.</summary>
-        TooManyNodes = 122,
+        TooManyNodes = 162,
         /// <summary>The surface has boundary or non-manifold edges (after welding), so it encloses no volume to fill with tetrahedra. Index: the first such triangle.</summary>
-        VolumeMeshNotClosed = 123,
+        VolumeMeshNotClosed = 163,
         /// <summary>Neighbouring triangles are wound in opposite senses, so the inside of the volume is undefined. Index: the first such triangle.</summary>
-        VolumeMeshInconsistentWinding = 124,
+        VolumeMeshInconsistentWinding = 164,
         /// <summary>A tetrahedral mesh has no nodes or no tetrahedra.</summary>
-        EmptyTetrahedralMesh = 125,
+        EmptyTetrahedralMesh = 165,
         /// <summary>A tetrahedral-mesh node position is NaN or infinite. Index: the first such node.</summary>
-        NonFiniteNode = 126,
+        NonFiniteNode = 166,
         /// <summary>A tetrahedron refers to a node that does not exist. Index: the first such tetrahedron.</summary>
-        TetrahedronIndexOutOfRange = 127,
+        TetrahedronIndexOutOfRange = 167,
         /// <summary>A tetrahedron has zero volume (a repeated node, or flat to float32 precision). Index: the first such tetrahedron.</summary>
-        TetrahedronDegenerate = 128,
+        TetrahedronDegenerate = 168,
         /// <summary>A tetrahedron has negative volume: its nodes are not positively oriented. Index: the first such tetrahedron.</summary>
-        TetrahedronInverted = 129,
+        TetrahedronInverted = 169,
         /// <summary>Warning: tetrahedra of poor shape (quality below TetrahedralMeshChecks.SliverQuality). Index: the worst one.</summary>
-        TetrahedronSliver = 130,
+        TetrahedronSliver = 170,
         /// <summary>Warning: nodes that no tetrahedron uses (they get no mass and move freely). Index: the first such node.</summary>
-        UnusedNodes = 131,
+        UnusedNodes = 171,
     }
 }
