@@ -29,8 +29,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Pins the particles whose flag is set (wᵢ = 0: they stay where the body is placed) and gives the others
-        /// wᵢ = 1/mᵢ; no flag set removes the pins. The cluster weights stay as built: build with the pins
-        /// (<see cref="Create(float3[], float[], int[], int[], bool, bool[])"/>) to weight them in the fits.
+        /// wᵢ = 1/mᵢ; no flag set removes the pins.
         /// </summary>
         /// <param name="pinned">One flag per particle.</param>
         public void PinParticles(ReadOnlySpan<bool> pinned)
@@ -64,14 +63,6 @@ namespace SoftBodyDynamics.Solvers
             Create(restPositions, masses, clusterOffsets, clusterParticles, buildQuadratic, null);
 
         /// <summary>
-        /// Weight of a pinned particle in the cluster fits, as a multiple of its mass: a pinned particle is infinitely
-        /// heavy, so a cluster that holds pinned particles follows them (a clamp holds the clusters at the clamp still,
-        /// instead of acting as a hinge they rotate about). Large, yet small enough that the float32 rest matrices stay well
-        /// conditioned.
-        /// </summary>
-        public const float PinnedClusterWeight = 1000f;
-
-        /// <summary>
         /// As <see cref="Create(float3[], float[], int[], int[], bool)"/>, with the particles flagged in
         /// <paramref name="pinned"/> pinned (wᵢ = 0, see <see cref="InverseMasses"/>) and weighted
         /// <see cref="PinnedClusterWeight"/> × mᵢ in the cluster fits; null or no flag set = no pins (the same model as without).
@@ -99,8 +90,7 @@ namespace SoftBodyDynamics.Solvers
             for (int i = 0; i < n; i++)
                 data.InverseClusterCounts[i] = counts[i] > 0 ? 1f / counts[i] : 0f;
             for (int k = 0; k < clusterParticles.Length; k++)
-                data.ClusterWeights[k] = masses[clusterParticles[k]] * data.InverseClusterCounts[clusterParticles[k]]
-                                         * (anyPinned && pinned[clusterParticles[k]] ? PinnedClusterWeight : 1f);
+                data.ClusterWeights[k] = masses[clusterParticles[k]] * data.InverseClusterCounts[clusterParticles[k]];
 
             for (int c = 0; c < clusters; c++)
             {
