@@ -13,9 +13,10 @@ namespace SoftBodyDynamics.Solvers
     /// with L the body's characteristic bending length (its size for a compact body; L_beam² / thickness for a slender
     /// beam, since a beam of length L_beam and thickness h sags as ρ a L_beam⁴ / (E h²)) and k a dimensionless
     /// coefficient that depends on the mode, β and the cluster layout. The coefficients below were fitted to the static
-    /// tip deflection of a clamped 4 : 1 : 1 cantilever of 8×2×2 cells (the method study's cantilever, small load, against
-    /// Euler–Bernoulli) with overlapping clusters of 2 cells and β = <see cref="Beta"/>; the study reports the residual of
-    /// this fit on its other scenes (squash, stretch, the Turek–Hron beam), which is the error of using one k for all.
+    /// tip deflection of the method study's clamped 8 : 1 : 1 rubber cantilever (16×2×2 cells, overlapping clusters of
+    /// 2 cells, β = <see cref="Beta"/>, small load, against the float64 FEM reference) at 16 substeps. The fit is poor:
+    /// the clustered beam's sag is far from ∝ 1/f² and depends on ωh, so after the fit the static tip is still 35–55 %
+    /// too soft at 16–64 substeps (Documentation~/choosing-a-method.md): treat the result as a starting point.
     /// The damping ratio is the material's for the slowest mode, scaled to act at f (<see cref="SlowestModeRatio"/>).
     /// </summary>
     public static class ShapeMatchingCalibration
