@@ -2,6 +2,7 @@
 # The main job: runs every benchmark scenario headless, prints the table (scenario, method, size,
 # ms per step, ns per item, items per second, error metrics) and writes a Markdown report with PNG figures.
 # Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT]
+# The method study (suites named MethodStudy*) runs only when --filter names it: bash Tools~/run.sh --filter MethodStudy
 # Default report folder: Reports~/latest (relative to the package root).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -54,6 +54,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         string ErrorMetricForPlot { get; }
     }
 
+    /// <summary>
+    /// A suite the runner leaves out unless <c>--filter</c> names it (part of its name): studies that take minutes (the
+    /// method study) stay out of the default and quick runs.
+    /// </summary>
+    public interface IScenarioSuiteOptIn
+    {
+    }
+
     /// <summary>One row of a finished suite, as a summary sees it.</summary>
     public readonly struct ScenarioOutcome
     {

@@ -12,6 +12,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new ShapeMatchingConvergenceSuite(),
             new ShapeMatchingFrameRateSuite(),
             new ShapeMatchingConservationSuite(),
+            new MethodStudySuite(new CantileverScene()),
+            new MethodStudyRankingSuite(),
         };
     }
 }

@@ -31,6 +31,8 @@ namespace SoftBodyDynamics.Runner
             {
                 if (options.Filter != null && suite.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) < 0)
                     continue;
+                if (options.Filter == null && suite is IScenarioSuiteOptIn)
+                    continue;
                 var suiteResult = new SuiteResult(suite);
                 Console.WriteLine();
                 Console.WriteLine($"== {suite.Name}");

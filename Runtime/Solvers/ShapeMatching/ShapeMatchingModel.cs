@@ -32,12 +32,28 @@ namespace SoftBodyDynamics.Solvers
         public readonly ReadOnlySpan<float3x3> QuadraticInverse;
         /// <summary>Rest data of the whole body with the plain masses: its centre and rotation place the body.</summary>
         public readonly ClusterRestData BodyRest;
+        /// <summary>
+        /// Inverse masses wᵢ (1/kg), 0 for a pinned particle (it stays where it is placed); empty when no particle is
+        /// pinned, which keeps the step exactly as without pins (see <see cref="ParticleBody.InverseMasses"/>).
+        /// </summary>
+        public readonly ReadOnlySpan<float> InverseMasses;
 
         public ShapeMatchingModel(ReadOnlySpan<float3> restPositions, ReadOnlySpan<float> masses,
             ReadOnlySpan<float> inverseClusterCounts, ReadOnlySpan<int> clusterOffsets, ReadOnlySpan<int> clusterParticles,
             ReadOnlySpan<float> clusterWeights, ReadOnlySpan<ClusterRestData> clusterRest,
             ReadOnlySpan<float3x3> quadraticInverse, in ClusterRestData bodyRest)
+            : this(restPositions, masses, inverseClusterCounts, clusterOffsets, clusterParticles, clusterWeights, clusterRest,
+                quadraticInverse, bodyRest, default)
         {
+        }
+
+        /// <param name="inverseMasses">wᵢ per particle, 0 = pinned; empty when none is pinned.</param>
+        public ShapeMatchingModel(ReadOnlySpan<float3> restPositions, ReadOnlySpan<float> masses,
+            ReadOnlySpan<float> inverseClusterCounts, ReadOnlySpan<int> clusterOffsets, ReadOnlySpan<int> clusterParticles,
+            ReadOnlySpan<float> clusterWeights, ReadOnlySpan<ClusterRestData> clusterRest,
+            ReadOnlySpan<float3x3> quadraticInverse, in ClusterRestData bodyRest, ReadOnlySpan<float> inverseMasses)
+        {
+            InverseMasses = inverseMasses;
             RestPositions = restPositions;
             Masses = masses;
             InverseClusterCounts = inverseClusterCounts;

@@ -18,12 +18,34 @@ namespace SoftBodyDynamics.Solvers
         public ClusterRestData[] ClusterRest;
         public float3x3[] QuadraticInverse;
         public ClusterRestData BodyRest;
+        /// <summary>Inverse masses wᵢ (1/kg), 0 = pinned; null or empty when no particle is pinned (<see cref="PinParticles"/>).</summary>
+        public float[] InverseMasses;
 
         public int ParticleCount => RestPositions.Length;
         public int ClusterCount => ClusterRest.Length;
 
         public ShapeMatchingModel AsModel() => new ShapeMatchingModel(RestPositions, Masses, InverseClusterCounts,
-            ClusterOffsets, ClusterParticles, ClusterWeights, ClusterRest, QuadraticInverse, BodyRest);
+            ClusterOffsets, ClusterParticles, ClusterWeights, ClusterRest, QuadraticInverse, BodyRest, InverseMasses);
+
+        /// <summary>
+        /// Pins the particles whose flag is set (wᵢ = 0: they stay where the body is placed) and gives the others
+        /// wᵢ = 1/mᵢ; no flag set removes the pins.
+        /// </summary>
+        /// <param name="pinned">One flag per particle.</param>
+        public void PinParticles(ReadOnlySpan<bool> pinned)
+        {
+            bool any = false;
+            for (int i = 0; i < pinned.Length; i++)
+                any |= pinned[i];
+            if (!any)
+            {
+                InverseMasses = null;
+                return;
+            }
+            InverseMasses = new float[ParticleCount];
+            for (int i = 0; i < ParticleCount; i++)
+                InverseMasses[i] = pinned[i] ? 0f : 1f / Masses[i];
+        }
 
         /// <summary>
         /// Precomputes everything the step needs from a rest shape and its clusters: nᵢ, the weights
@@ -37,8 +59,18 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="clusterParticles">Particle indices of each cluster, concatenated; no duplicates within a cluster.</param>
         /// <param name="buildQuadratic">Also build Ã_qq⁻¹ (324 bytes per cluster) for the quadratic mode.</param>
         public static ShapeMatchingModelData Create(float3[] restPositions, float[] masses, int[] clusterOffsets,
-            int[] clusterParticles, bool buildQuadratic)
+            int[] clusterParticles, bool buildQuadratic) =>
+            Create(restPositions, masses, clusterOffsets, clusterParticles, buildQuadratic, null);
+
+        /// <summary>
+        /// As <see cref="Create(float3[], float[], int[], int[], bool)"/>, with the particles flagged in
+        /// <paramref name="pinned"/> pinned (wᵢ = 0, see <see cref="InverseMasses"/>) and weighted
+        /// <see cref="PinnedClusterWeight"/> × mᵢ in the cluster fits; null or no flag set = no pins (the same model as without).
+        /// </summary>
+        public static ShapeMatchingModelData Create(float3[] restPositions, float[] masses, int[] clusterOffsets,
+            int[] clusterParticles, bool buildQuadratic, bool[] pinned)
         {
+            bool anyPinned = pinned != null && Array.IndexOf(pinned, true) >= 0;
             int n = restPositions.Length;
             int clusters = clusterOffsets.Length - 1;
             var data = new ShapeMatchingModelData
@@ -76,6 +108,8 @@ namespace SoftBodyDynamics.Solvers
                 }
             }
             data.BodyRest = ShapeMatching.ComputeRestData(restPositions, masses);
+            if (anyPinned)
+                data.PinParticles(pinned);
             return data;
         }
     }

@@ -129,6 +129,11 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         static void PullTowardGoals(in ShapeMatchingModel model, in ParticleBody body, in RigidFrame frame, float alpha, float h)
         {
+            if (body.HasPins)
+            {
+                PullTowardGoalsPinned(model, body, alpha, h);
+                return;
+            }
             var x = body.Positions;
             var v = body.Velocities;
             var delta = body.Scratch;
@@ -158,6 +163,24 @@ namespace SoftBodyDynamics.Solvers
             float invH = 1f / h;
             for (int i = 0; i < x.Length; i++)
                 v[i] += (delta[i] - math.cross(spin, x[i] - xcm)) * invH;
+        }
+
+        /// <summary>
+        /// Eq. 3 as a velocity change for a body with pinned particles: the pins hold the body, so its momentum and
+        /// angular momentum are not conserved and the two projections of <see cref="PullTowardGoals"/> do not apply;
+        /// each free particle moves Δᵢ = α (gᵢ − xᵢ) toward its goal (vᵢ += Δᵢ / h), a pinned one (wᵢ = 0) not at all.
+        /// </summary>
+        static void PullTowardGoalsPinned(in ShapeMatchingModel model, in ParticleBody body, float alpha, float h)
+        {
+            if (!(alpha > 0f))
+                return;
+            var x = body.Positions;
+            var v = body.Velocities;
+            var goals = body.Scratch;
+            float scale = alpha / h;
+            for (int i = 0; i < x.Length; i++)
+                if (model.InverseClusterCounts[i] > 0f && body.InverseMasses[i] > 0f)
+                    v[i] += (goals[i] - x[i]) * scale;
         }
     }
 }

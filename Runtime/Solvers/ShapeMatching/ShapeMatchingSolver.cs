@@ -107,8 +107,8 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>The particle arrays of a shape-matching body as the shared step sees them.</summary>
         public static ParticleBody Body(in ShapeMatchingModel model, in ShapeMatchingState state) =>
-            new ParticleBody(model.RestPositions, model.BodyRest.RestCenter, model.Masses, state.Positions, state.Velocities,
-                state.Predicted, state.Goals, state.ContactNormals);
+            new ParticleBody(model.RestPositions, model.BodyRest.RestCenter, model.Masses, model.InverseMasses, state.Positions,
+                state.Velocities, state.Predicted, state.Goals, state.ContactNormals);
 
         static void ResetClusters(in ShapeMatchingModel model, in ShapeMatchingState state, quaternion rotation)
         {

@@ -1,0 +1,160 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// A square rubber beam clamped at x = 0 (its end face pinned) sagging under gravity: static tip deflection under a
+    /// small load (against Euler–Bernoulli and the float64 FEM reference) and a large one (against the float64 reference),
+    /// and the first bending frequency (against the reference).
+    /// </summary>
+    public sealed class CantileverScene : StudyScene
+    {
+        /// <summary>Beam length (m).</summary>
+        public const float Length = 0.4f;
+        /// <summary>Side of the square cross-section (m).</summary>
+        public const float Thickness = 0.05f;
+        /// <summary>Cells along the length and across.</summary>
+        public static readonly int3 Cells = new int3(16, 2, 2);
+        /// <summary>Small load: gravity times this (tip deflection ≈ 2 % of the length).</summary>
+        public const float SmallLoad = 0.05f;
+        /// <summary>Large load: gravity times this (tip deflection ≈ 20 % of the length).</summary>
+        public const float LargeLoad = 0.5f;
+        /// <summary>Static runs: this long (s) with critical damping, the tip averaged over the last <see cref="AverageTime"/>.</summary>
+        public const float StaticTime = 3f;
+        /// <summary>Averaging window of the static runs (s).</summary>
+        public const float AverageTime = 0.25f;
+        /// <summary>Free oscillation for the frequency (s).</summary>
+        public const float OscillationTime = 3f;
+
+        /// <summary>Metric: small-load tip deflection over the reference, minus 1.</summary>
+        public const string SmallTip = "small tip err";
+        /// <summary>Metric: small-load tip deflection over Euler–Bernoulli, minus 1 (signed).</summary>
+        public const string SmallTipEb = "tip/EB-1";
+        /// <summary>Metric: large-load tip deflection error against the reference.</summary>
+        public const string LargeTip = "large tip err";
+        /// <summary>Metric: first-frequency error against the reference.</summary>
+        public const string Frequency = "f1 err";
+
+        static MethodBodySetup s_Setup;
+
+        /// <summary>Soft rubber (E 1 MPa, ν 0.45, 1100 kg/m³, ζ 0.2).</summary>
+        public static ElasticMaterial Material => ElasticMaterial.Rubber;
+
+        public override string Name => "MethodStudyCantilever";
+
+        public override float CellSize => Length / Cells.x;
+
+        public override MethodBodySetup Setup => s_Setup ??= CreateSetup(Cells);
+
+        /// <summary>The beam at a resolution (cells along x, y, z).</summary>
+        public static MethodBodySetup CreateSetup(int3 cells)
+        {
+            TetrahedralMesh mesh = StudyBox.Create(new float3(Length, Thickness, Thickness), cells, new float3(0.5f * Length, 0f, 0f));
+            return new MethodBodySetup
+            {
+                Mesh = mesh,
+                Material = Material,
+                Pinned = StudyBox.NodesAt(mesh, 0, 0f, 1e-5f),
+                CalibrationLength = Length * Length / Thickness,
+            };
+        }
+
+        public override string Description =>
+            $"A {Length} m beam of {Thickness}×{Thickness} m cross-section ({Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra, " +
+            $"{(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles), soft rubber (E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³), its x = 0 face pinned. " +
+            $"Static tip deflection (the mean y of the tip face, averaged over the last {AverageTime} s of {StaticTime} s with ζ = 1) under " +
+            $"{SmallLoad} g ('{SmallTip}': against the reference, '{SmallTipEb}': signed, against Euler–Bernoulli qL⁴/(8EI)) and under {LargeLoad} g " +
+            $"('{LargeTip}', geometrically nonlinear: against the reference only); first bending frequency from the zero crossings of the tip " +
+            $"oscillating about its sag under {SmallLoad} g for {OscillationTime} s with ζ = 0.01 ('{Frequency}'). " + CantileverTargets.Source +
+            $" '{Error}' = the worst of the three errors. Shape matching's frequency is calibrated by ShapeMatchingCalibration with L = L_beam²/h.";
+
+        public override IReadOnlyList<Metric> Measure(Func<MethodBodySetup, IMethodBody> build)
+        {
+            MethodBodySetup setup = Setup;
+            bool[] tipFace = StudyBox.NodesAt(setup.Mesh, 0, Length, 1e-5f);
+            ElasticMaterial m = Material;
+            IMethodBody staticBody = build(setup.With(new ElasticMaterial(m.YoungsModulus, m.PoissonRatio, m.Density, 1f)));
+            double small = StaticTip(staticBody, tipFace, SmallLoad, out int r1);
+            double large = StaticTip(staticBody, tipFace, LargeLoad, out int r2);
+            IMethodBody free = build(setup.With(new ElasticMaterial(m.YoungsModulus, m.PoissonRatio, m.Density, 0.01f)));
+            double f = FirstFrequency(free, tipFace, out int r3);
+            CantileverTargets t = CantileverTargets.Get(setup);
+            double smallErr = Relative(small, t.SmallTip), largeErr = Relative(large, t.LargeTip), fErr = Relative(f, t.Frequency);
+            return new[]
+            {
+                new Metric(Error, Worst(double.IsNaN(small) || double.IsNaN(large) || double.IsNaN(f), smallErr, largeErr, fErr)),
+                new Metric(SmallTip, smallErr),
+                new Metric(SmallTipEb, small / t.SmallTipEulerBernoulli - 1.0),
+                new Metric(LargeTip, largeErr),
+                new Metric(Frequency, fErr),
+                new Metric("tip small", small, " m"),
+                new Metric("f1", f, " Hz"),
+                new Metric(Resets, r1 + r2 + r3),
+            };
+        }
+
+        /// <summary>Downward static tip deflection (m) under <paramref name="load"/> g; NaN when the body diverged or was reset.</summary>
+        static double StaticTip(IMethodBody body, bool[] tipFace, float load, out int resets)
+        {
+            body.Place();
+            float y0 = Mean(body, tipFace).y;
+            var g = new float3(0f, -9.81f * load, 0f);
+            int frames = (int)Math.Round(StaticTime / Dt), average = (int)Math.Round(AverageTime / Dt);
+            double sum = 0;
+            for (int k = 0; k < frames; k++)
+            {
+                body.Step(Dt, g, ReadOnlySpan<ColliderShape>.Empty);
+                if (k >= frames - average)
+                    sum += y0 - Mean(body, tipFace).y;
+            }
+            resets = body.Resets;
+            return resets == 0 && Finite(body) ? sum / average : double.NaN;
+        }
+
+        /// <summary>First frequency (Hz): upward zero crossings of the tip's y about the mid-range of its oscillation under the small load.</summary>
+        static double FirstFrequency(IMethodBody body, bool[] tipFace, out int resets)
+        {
+            body.Place();
+            var g = new float3(0f, -9.81f * SmallLoad, 0f);
+            int frames = (int)Math.Round(OscillationTime / Dt);
+            var y = new double[frames + 1];
+            y[0] = Mean(body, tipFace).y;
+            for (int k = 1; k <= frames; k++)
+            {
+                body.Step(Dt, g, ReadOnlySpan<ColliderShape>.Empty);
+                y[k] = Mean(body, tipFace).y;
+            }
+            resets = body.Resets;
+            if (resets > 0 || !Finite(body))
+                return double.NaN;
+            return OscillationFrequency(y, Dt);
+        }
+
+        /// <summary>Frequency (Hz) of a sampled oscillation from its upward crossings of its mid-range (linearly interpolated); NaN with fewer than two.</summary>
+        public static double OscillationFrequency(double[] y, double dt)
+        {
+            double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
+            foreach (double v in y)
+            {
+                lo = Math.Min(lo, v);
+                hi = Math.Max(hi, v);
+            }
+            double mid = 0.5 * (lo + hi);
+            double first = double.NaN, last = double.NaN;
+            int count = 0;
+            for (int k = 1; k < y.Length; k++)
+                if (y[k - 1] < mid && y[k] >= mid)
+                {
+                    double t = (k - 1 + (mid - y[k - 1]) / (y[k] - y[k - 1])) * dt;
+                    if (count == 0)
+                        first = t;
+                    last = t;
+                    count++;
+                }
+            return count >= 2 ? (count - 1) / (last - first) : double.NaN;
+        }
+    }
+}

@@ -1,0 +1,57 @@
+using System;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>What every method of the study is built from: one tetrahedral mesh, one material, the same pins and contact settings.</summary>
+    public sealed class MethodBodySetup
+    {
+        /// <summary>The body: its nodes are the particles of every method.</summary>
+        public TetrahedralMesh Mesh;
+        /// <summary>The material every method is calibrated to.</summary>
+        public ElasticMaterial Material;
+        /// <summary>Pinned particles (one flag per node); null = none.</summary>
+        public bool[] Pinned;
+        /// <summary>Particle radius against colliders (m).</summary>
+        public float ParticleRadius;
+        /// <summary>Coulomb friction against colliders.</summary>
+        public float Friction = 0.5f;
+        /// <summary>Characteristic length L of the body for the shape-matching calibration (m; see <see cref="ShapeMatchingCalibration"/>).</summary>
+        public float CalibrationLength;
+
+        /// <summary>Lumped masses mᵢ = Σ ρ V_t / 4 over the tetrahedra t that hold node i (kg).</summary>
+        public float[] LumpedMasses()
+        {
+            var m = new float[Mesh.NodeCount];
+            foreach (int4 t in Mesh.Tetrahedra)
+            {
+                float3 a = Mesh.Positions[t.x], b = Mesh.Positions[t.y], c = Mesh.Positions[t.z], d = Mesh.Positions[t.w];
+                float quarter = Material.Density * Math.Abs(TetrahedralMesh.SignedVolume(a, b, c, d)) * 0.25f;
+                m[t.x] += quarter;
+                m[t.y] += quarter;
+                m[t.z] += quarter;
+                m[t.w] += quarter;
+            }
+            return m;
+        }
+
+        /// <summary>Inverse masses wᵢ (0 for pinned nodes), or null when nothing is pinned.</summary>
+        public float[] InverseMasses(float[] masses)
+        {
+            if (Pinned == null || Array.IndexOf(Pinned, true) < 0)
+                return null;
+            var w = new float[masses.Length];
+            for (int i = 0; i < w.Length; i++)
+                w[i] = Pinned[i] ? 0f : 1f / masses[i];
+            return w;
+        }
+
+        /// <summary>A copy with another material (same mesh, pins and contacts).</summary>
+        public MethodBodySetup With(ElasticMaterial material) => new MethodBodySetup
+        {
+            Mesh = Mesh, Material = material, Pinned = Pinned, ParticleRadius = ParticleRadius, Friction = Friction,
+            CalibrationLength = CalibrationLength,
+        };
+    }
+}

@@ -1,0 +1,64 @@
+using System.Collections.Generic;
+using System.Linq;
+using System.Text;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// The method study's summary over all its scenes run before it: for every method, the cost to reach 1 %, 5 % and
+    /// 20 % error on every scene at once (the largest of the per-scene costs), and the per-scene cost to reach 5 %.
+    /// Runs no scenario of its own.
+    /// </summary>
+    public sealed class MethodStudyRankingSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteOptIn
+    {
+        public string Name => "MethodStudyRanking";
+
+        public string Description =>
+            "Summary of the method study scenes above: a method reaches an error level on all scenes at the largest of its per-scene " +
+            "costs to reach it (ns per particle per 1/60 s step); 'not reached' when some scene never gets there at the knob values swept.";
+
+        public string ErrorMetricForPlot => null;
+
+        public IEnumerable<IScenario> Scenarios(bool quick) => Enumerable.Empty<IScenario>();
+
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        {
+            var scenes = MethodStudyRanking.SceneOrder.ToList();
+            if (scenes.Count == 0)
+                return "No method-study scene ran (filter).";
+            var families = scenes.SelectMany(s => MethodStudyRanking.Rows(s).Select(r => MethodStudyRanking.Family(r.Method))).Distinct().ToList();
+            var table = new List<(string Family, double[] All, double[] PerScene)>();
+            foreach (string f in families)
+            {
+                var perSceneCosts = scenes.Select(s => MethodStudyRanking.Rows(s).Where(r => MethodStudyRanking.Family(r.Method) == f).ToList()).ToList();
+                double[] all = MethodStudyRanking.Thresholds.Select(t => perSceneCosts.Where(g => g.Count > 0)
+                    .Select(g => MethodStudyRanking.CostToReach(g, t)).DefaultIfEmpty(double.PositiveInfinity).Max()).ToArray();
+                double[] per = perSceneCosts.Select(g => g.Count > 0 ? MethodStudyRanking.CostToReach(g, 0.05) : double.NaN).ToArray();
+                table.Add((f, all, per));
+            }
+            table = table.OrderBy(t => t.All[1]).ThenBy(t => t.All[2]).ThenBy(t => t.PerScene.Count(c => double.IsPositiveInfinity(c))).ToList();
+            var md = new StringBuilder();
+            md.AppendLine("Cost (ns per particle-step) to reach an error on every scene at once, and per scene to reach 5 %:");
+            md.AppendLine();
+            md.Append("| rank | method | all scenes ≤ 1 % | ≤ 5 % | ≤ 20 % |");
+            foreach (string s in scenes)
+                md.Append($" {s} ≤ 5 % |");
+            md.AppendLine();
+            md.Append("|---:|---|---:|---:|---:|");
+            foreach (string _ in scenes)
+                md.Append("---:|");
+            md.AppendLine();
+            int rank = 1;
+            foreach (var t in table)
+            {
+                md.Append($"| {rank++} | {t.Family} | {C(t.All[0])} | {C(t.All[1])} | {C(t.All[2])} |");
+                foreach (double c in t.PerScene)
+                    md.Append($" {C(c)} |");
+                md.AppendLine();
+            }
+            return md.ToString();
+        }
+
+        static string C(double ns) => double.IsNaN(ns) ? "–" : double.IsPositiveInfinity(ns) ? "not reached" : ns.ToString(ns < 100 ? "0.0" : "0");
+    }
+}

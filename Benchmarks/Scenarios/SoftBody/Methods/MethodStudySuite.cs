@@ -1,0 +1,107 @@
+using System.Collections.Generic;
+using System.Linq;
+using System.Text;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// One scene of the method study as a suite: every method of <see cref="MethodCatalog"/> at every knob value, one
+    /// table, one error-against-cost figure (one curve per method) and a ranking by the cost to reach 1 %, 5 % and 20 %.
+    /// </summary>
+    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteOptIn, IScenarioSuiteFigure
+    {
+        readonly StudyScene m_Scene;
+
+        public MethodStudySuite(StudyScene scene) { m_Scene = scene; }
+
+        public string Name => m_Scene.Name;
+        public string Description => m_Scene.Description + " " + MethodStudyRanking.CostNote;
+        public string ErrorMetricForPlot => StudyScene.Error;
+
+        public IEnumerable<IScenario> Scenarios(bool quick)
+        {
+            foreach (MethodVariant v in MethodCatalog.Variants)
+            foreach (int knob in quick ? v.QuickKnobs : v.Knobs)
+                yield return new MethodStudyScenario(m_Scene, v, knob);
+        }
+
+        public string Series(ScenarioOutcome row) => MethodStudyRanking.Family(row.Method);
+        public string PointLabel(ScenarioOutcome row) => MethodStudyRanking.Knob(row.Method);
+        public string CostLabel => "ns per particle per 1/60 s step (all substeps and iterations), median";
+        public double Cost(ScenarioOutcome row) => row.NsPerItem;
+
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        {
+            MethodStudyRanking.Record(Name, rows);
+            var md = new StringBuilder();
+            md.AppendLine($"Cheapest setting of each method that reaches an error ('{StudyScene.Error}') of 1 %, 5 % and 20 % " +
+                          "(ns per particle-step; ranked by the cost to reach 5 %, then 20 %):");
+            md.AppendLine();
+            md.Append(MethodStudyRanking.Table(rows));
+            return md.ToString();
+        }
+    }
+
+    /// <summary>The ranking tables of the method study: per scene, and over all scenes (<see cref="MethodStudyRankingSuite"/>).</summary>
+    public static class MethodStudyRanking
+    {
+        /// <summary>Error thresholds of the ranking (fractions).</summary>
+        public static readonly double[] Thresholds = { 0.01, 0.05, 0.20 };
+
+        /// <summary>How cost is counted, for the descriptions.</summary>
+        public const string CostNote =
+            "One item is one particle through one 1/60 s step of the scene (all substeps and iterations): ns/item is the cost per particle " +
+            "per step, the median of the timed steps after warm-up (managed .NET, one thread). '" + StudyScene.Error + "' is the worst of the " +
+            "scene's relative errors; NaN = the method diverged or the guard reset it.";
+
+        static readonly Dictionary<string, IReadOnlyList<ScenarioOutcome>> s_Scenes = new Dictionary<string, IReadOnlyList<ScenarioOutcome>>();
+
+        /// <summary>Scenes recorded so far in this run, in run order.</summary>
+        public static readonly List<string> SceneOrder = new List<string>();
+
+        public static void Record(string scene, IReadOnlyList<ScenarioOutcome> rows)
+        {
+            if (!s_Scenes.ContainsKey(scene))
+                SceneOrder.Add(scene);
+            s_Scenes[scene] = rows;
+        }
+
+        public static IReadOnlyList<ScenarioOutcome> Rows(string scene) => s_Scenes.TryGetValue(scene, out var r) ? r : null;
+
+        public static string Family(string method) => method.Split(';')[0].Trim();
+        public static string Knob(string method) => method.Contains(";") ? method.Substring(method.IndexOf(';') + 1).Trim() : "";
+
+        /// <summary>Cheapest cost (ns per particle-step) among rows with error ≤ <paramref name="threshold"/>, or +∞.</summary>
+        public static double CostToReach(IEnumerable<ScenarioOutcome> rows, double threshold)
+        {
+            double best = double.PositiveInfinity;
+            foreach (ScenarioOutcome r in rows)
+            {
+                double e = r.Value(StudyScene.Error);
+                if (e <= threshold && r.NsPerItem < best)
+                    best = r.NsPerItem;
+            }
+            return best;
+        }
+
+        /// <summary>Markdown table: one row per method, the cost to reach each threshold and the best error seen.</summary>
+        public static string Table(IReadOnlyList<ScenarioOutcome> rows)
+        {
+            var families = rows.GroupBy(r => Family(r.Method))
+                .Select(g => (Family: g.Key, Costs: Thresholds.Select(t => CostToReach(g, t)).ToArray(),
+                    Best: g.Select(r => r.Value(StudyScene.Error)).Where(double.IsFinite).DefaultIfEmpty(double.NaN).Min()))
+                .OrderBy(f => f.Costs[1]).ThenBy(f => f.Costs[2]).ThenBy(f => f.Best).ToList();
+            var md = new StringBuilder();
+            md.AppendLine("| rank | method | to 1 % | to 5 % | to 20 % | best error |");
+            md.AppendLine("|---:|---|---:|---:|---:|---:|");
+            int rank = 1;
+            foreach (var f in families)
+                md.AppendLine($"| {rank++} | {f.Family} | {Cost(f.Costs[0])} | {Cost(f.Costs[1])} | {Cost(f.Costs[2])} | {Percent(f.Best)} |");
+            return md.ToString();
+        }
+
+        static string Cost(double ns) => double.IsPositiveInfinity(ns) ? "not reached" : ns < 100 ? ns.ToString("0.0") + " ns" : ns.ToString("0") + " ns";
+
+        public static string Percent(double e) => double.IsNaN(e) ? "diverged" : (100 * e).ToString(e < 0.001 ? "0.000" : e < 0.1 ? "0.00" : "0.0") + " %";
+    }
+}

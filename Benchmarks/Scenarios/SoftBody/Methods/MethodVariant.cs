@@ -1,0 +1,31 @@
+using System;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>One method of the study with its cost knob: a family (legend entry), the knob values to sweep and how to build a body.</summary>
+    public sealed class MethodVariant
+    {
+        /// <summary>Legend entry, e.g. "FEM co-rotational, implicit".</summary>
+        public readonly string Family;
+        /// <summary>What the knob counts, e.g. "substeps".</summary>
+        public readonly string KnobUnit;
+        /// <summary>Knob values of the full run, cheapest first.</summary>
+        public readonly int[] Knobs;
+        /// <summary>Knob values of the quick run (empty = the method is left out of the quick run).</summary>
+        public readonly int[] QuickKnobs;
+        /// <summary>Builds a body of the setup with a knob value; the cell size (m) sizes shape matching's clusters.</summary>
+        public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
+
+        public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create)
+        {
+            Family = family;
+            KnobUnit = knobUnit;
+            Knobs = knobs;
+            QuickKnobs = quickKnobs;
+            Create = create;
+        }
+
+        /// <summary>"family, knob unit", the scenario's method text (the figure splits it at the comma before the knob).</summary>
+        public string Label(int knob) => $"{Family}; {knob} {KnobUnit}";
+    }
+}

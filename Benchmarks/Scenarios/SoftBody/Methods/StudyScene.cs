@@ -1,0 +1,90 @@
+using System;
+using System.Collections.Generic;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// A scene of the method study: a body setup, the frame the harness times (one 1/60 s step of the scene's motion)
+    /// and the measurement that compares a method's answer with the scene's reference (never with the method itself).
+    /// </summary>
+    public abstract class StudyScene
+    {
+        /// <summary>Frame length of every scene (s).</summary>
+        public const float Dt = 1f / 60f;
+        /// <summary>Timed frames run from the rest shape; every this many frames the body is placed again.</summary>
+        public const int FramesPerCycle = 120;
+        /// <summary>Metric every scene plots and ranks: the worst of its relative errors (dimensionless).</summary>
+        public const string Error = "err";
+        /// <summary>Metric: NaN-guard resets during the measurement.</summary>
+        public const string Resets = "resets";
+
+        /// <summary>Suite name.</summary>
+        public abstract string Name { get; }
+        /// <summary>What the scene does and which reference it compares with.</summary>
+        public abstract string Description { get; }
+        /// <summary>The body every method is built from.</summary>
+        public abstract MethodBodySetup Setup { get; }
+        /// <summary>Edge of one cell of the box (m): shape matching's cluster size is a multiple of it.</summary>
+        public abstract float CellSize { get; }
+
+        /// <summary>Uniform acceleration of the timed frames (m/s²).</summary>
+        protected virtual float3 TimedGravity => new float3(0f, -9.81f, 0f);
+
+        /// <summary>One timed frame: the scene's load on the body, placed again every <see cref="FramesPerCycle"/> frames.</summary>
+        public virtual void TimedFrame(IMethodBody body, int frame)
+        {
+            if (frame % FramesPerCycle == 0)
+                body.Place();
+            body.Step(Dt, TimedGravity, ReadOnlySpan<SoftBodyDynamics.Solvers.ColliderShape>.Empty);
+        }
+
+        /// <summary>
+        /// Runs the scene's measurements on bodies of <paramref name="build"/> (one per setup the scene needs) and returns
+        /// the metrics, <see cref="Error"/> first. A body that diverged gives NaN errors.
+        /// </summary>
+        public abstract IReadOnlyList<Metric> Measure(Func<MethodBodySetup, IMethodBody> build);
+
+        /// <summary>|a/b − 1|, NaN when a is not finite.</summary>
+        protected static double Relative(double value, double reference) =>
+            double.IsFinite(value) ? Math.Abs(value / reference - 1.0) : double.NaN;
+
+        /// <summary>The largest of the errors that have a reference (NaN ones are skipped); NaN when <paramref name="diverged"/>.</summary>
+        protected static double Worst(bool diverged, params double[] errors)
+        {
+            if (diverged)
+                return double.NaN;
+            double w = 0;
+            foreach (double v in errors)
+                if (!double.IsNaN(v))
+                    w = Math.Max(w, v);
+            return w;
+        }
+
+        /// <summary>True when every position and velocity is finite.</summary>
+        protected static bool Finite(IMethodBody body)
+        {
+            for (int i = 0; i < body.ParticleCount; i++)
+                if (!math.all(math.isfinite(body.Positions[i])) || !math.all(math.isfinite(body.Velocities[i])))
+                    return false;
+            return true;
+        }
+
+        /// <summary>Mean of the positions of the flagged nodes (m).</summary>
+        protected static float3 Mean(IMethodBody body, bool[] nodes)
+        {
+            double x = 0, y = 0, z = 0;
+            int n = 0;
+            for (int i = 0; i < nodes.Length; i++)
+                if (nodes[i])
+                {
+                    x += body.Positions[i].x;
+                    y += body.Positions[i].y;
+                    z += body.Positions[i].z;
+                    n++;
+                }
+            n = Math.Max(1, n);
+            return new float3((float)(x / n), (float)(y / n), (float)(z / n));
+        }
+    }
+}
