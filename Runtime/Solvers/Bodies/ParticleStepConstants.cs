@@ -54,5 +54,38 @@ namespace SoftBodyDynamics.Solvers
                 Contact = new ContactProjection.Settings { BounceThreshold = 2f * math.length(gravity) * h },
             };
         }
+
+        /// <summary>
+        /// Constants of a step of <paramref name="dt"/> in exactly <paramref name="substeps"/> substeps with no shared
+        /// velocity damping and no pull (methods that damp in their own stage: mass-spring, FEM), gravity
+        /// <paramref name="gravity"/>, contact and guard settings as given.
+        /// </summary>
+        /// <param name="maxDepenetrationSpeed">Largest push-out speed of a particle that starts a substep inside a collider (m/s).</param>
+        public static ParticleStepConstants Undamped(float dt, int substeps, float3 gravity, float particleRadius, float friction,
+            float restitution, float maxDepenetrationSpeed, float maxSpeed, float sleepSpeed, float sleepDelay)
+        {
+            float h = dt / substeps;
+            return new ParticleStepConstants
+            {
+                Dt = dt,
+                H = h,
+                Substeps = substeps,
+                Pull = 0f,
+                VelocityRetention = 1f,
+                Gravity = gravity,
+                // Resting contacts must not bounce: ignore approach speeds one substep of acceleration can produce.
+                Contact = new ContactProjection.Settings
+                {
+                    BounceThreshold = 2f * math.length(gravity) * h,
+                    Radius = particleRadius,
+                    Friction = friction,
+                    Restitution = restitution,
+                    MaxDepenetration = maxDepenetrationSpeed * h,
+                },
+                MaxSpeed = maxSpeed,
+                SleepSpeed = sleepSpeed,
+                SleepDelay = sleepDelay,
+            };
+        }
     }
 }

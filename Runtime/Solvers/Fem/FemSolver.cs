@@ -50,26 +50,8 @@ namespace SoftBodyDynamics.Solvers
         public static ParticleStepConstants Constants(in FemParameters p, float dt)
         {
             int substeps = math.clamp(p.Substeps, 1, FemParameters.MaxSubsteps);
-            float h = dt / substeps;
-            var k = new ParticleStepConstants
-            {
-                Dt = dt,
-                H = h,
-                Substeps = substeps,
-                Pull = 0f,
-                VelocityRetention = 1f,
-                Gravity = p.Acceleration,
-                // Resting contacts must not bounce: ignore approach speeds one substep of acceleration can produce.
-                Contact = new ContactProjection.Settings { BounceThreshold = 2f * math.length(p.Acceleration) * h },
-            };
-            k.Contact.Radius = p.ParticleRadius;
-            k.Contact.Friction = p.Friction;
-            k.Contact.Restitution = p.Restitution;
-            k.Contact.MaxDepenetration = p.MaxDepenetrationSpeed * h;
-            k.MaxSpeed = p.MaxSpeed;
-            k.SleepSpeed = p.SleepSpeed;
-            k.SleepDelay = p.SleepDelay;
-            return k;
+            return ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction, p.Restitution,
+                p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
         }
 
         /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment.</summary>

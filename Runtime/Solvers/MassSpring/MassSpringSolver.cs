@@ -24,25 +24,8 @@ namespace SoftBodyDynamics.Solvers
         public static ParticleStepConstants Constants(in MassSpringParameters p, float dt)
         {
             int substeps = math.clamp(p.Substeps, 1, MassSpringParameters.MaxSubsteps);
-            float h = dt / substeps;
-            var k = new ParticleStepConstants
-            {
-                Dt = dt,
-                H = h,
-                Substeps = substeps,
-                Pull = 0f,
-                VelocityRetention = 1f,
-                Gravity = p.Acceleration,
-                Contact = new ContactProjection.Settings { BounceThreshold = 2f * math.length(p.Acceleration) * h },
-                MaxSpeed = p.MaxSpeed,
-                SleepSpeed = p.SleepSpeed,
-                SleepDelay = p.SleepDelay,
-            };
-            k.Contact.Radius = p.ParticleRadius;
-            k.Contact.Friction = p.Friction;
-            k.Contact.Restitution = p.Restitution;
-            k.Contact.MaxDepenetration = p.MaxDepenetrationSpeed * h;
-            return k;
+            return ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction, p.Restitution,
+                p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
         }
 
         /// <summary>Advances the body by <paramref name="dt"/> seconds (see the class comment).</summary>
