@@ -41,6 +41,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         IReadOnlyList<Metric> Evaluate();
     }
 
+    /// <summary>A scenario whose steps take long enough that the harness times fewer of them than it would by default.</summary>
+    public interface IScenarioRepeatCap
+    {
+        /// <summary>Most timed steps the harness runs for this scenario (≥ 1).</summary>
+        int MaxRepeats { get; }
+    }
+
     /// <summary>Groups of scenarios the runner knows, with the figure each group plots.</summary>
     public interface IScenarioSuite
     {
@@ -62,18 +69,34 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
     }
 
+    /// <summary>
+    /// A suite that runs more scenarios when <c>--filter</c> names it (part of its name): sizes too slow for the default
+    /// run (the 100k-particle bodies of the method throughput suite) run only on request.
+    /// </summary>
+    public interface IScenarioSuiteWhenNamed
+    {
+        /// <summary>Scenarios of a run whose filter names the suite (used instead of <see cref="IScenarioSuite.Scenarios"/>).</summary>
+        IEnumerable<IScenario> NamedScenarios(bool quick);
+    }
+
     /// <summary>One row of a finished suite, as a summary sees it.</summary>
     public readonly struct ScenarioOutcome
     {
         public readonly string Method;
         public readonly double NsPerItem;
         public readonly IReadOnlyList<Metric> Metrics;
+        /// <summary>Problem size of the row (<see cref="IScenario.Size"/>); 0 when not given.</summary>
+        public readonly int Size;
+        /// <summary>Items per step of the row (<see cref="IScenario.ItemsPerStep"/>); 0 when not given.</summary>
+        public readonly long ItemsPerStep;
 
-        public ScenarioOutcome(string method, double nsPerItem, IReadOnlyList<Metric> metrics)
+        public ScenarioOutcome(string method, double nsPerItem, IReadOnlyList<Metric> metrics, int size = 0, long itemsPerStep = 0)
         {
             Method = method;
             NsPerItem = nsPerItem;
             Metrics = metrics;
+            Size = size;
+            ItemsPerStep = itemsPerStep;
         }
 
         /// <summary>The named metric, or NaN when the row does not report it.</summary>

@@ -14,6 +14,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new ShapeMatchingConservationSuite(),
             new MethodStudySuite(new CantileverScene()),
             new MethodStudyRankingSuite(),
+            new SoftBodyMethodsThroughputSuite(),
         };
     }
 }

@@ -36,18 +36,21 @@ namespace SoftBodyDynamics.Runner
                 var suiteResult = new SuiteResult(suite);
                 Console.WriteLine();
                 Console.WriteLine($"== {suite.Name}");
-                var scenarios = new List<IScenario>(suite.Scenarios(options.Quick));
+                var scenarios = new List<IScenario>(options.Filter != null && suite is IScenarioSuiteWhenNamed named
+                    ? named.NamedScenarios(options.Quick)
+                    : suite.Scenarios(options.Quick));
                 var table = new TablePrinter(Console.Out, scenarios);
                 table.PrintHeader();
                 foreach (IScenario scenario in scenarios)
                 {
-                    ScenarioResult r = ScenarioTimer.Run(scenario, options.Repeats);
+                    int repeats = scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
+                    ScenarioResult r = ScenarioTimer.Run(scenario, repeats);
                     suiteResult.Rows.Add(r);
                     table.PrintRow(r);
                 }
                 if (suite is IScenarioSuiteSummary summary)
                 {
-                    var outcomes = suiteResult.Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics));
+                    var outcomes = suiteResult.Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep));
                     suiteResult.Summary = summary.Summary(outcomes, options.Quick);
                     Console.WriteLine();
                     Console.WriteLine(suiteResult.Summary.TrimEnd());

@@ -92,7 +92,7 @@ namespace SoftBodyDynamics.Runner
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
             var figure = s.Suite as IScenarioSuiteFigure;
-            ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics);
+            ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep);
             // One series per method family (the text before the first comma, or the suite's own series), labelled by the rest.
             var families = figure != null
                 ? rows.GroupBy(r => figure.Series(Outcome(r))).ToList()

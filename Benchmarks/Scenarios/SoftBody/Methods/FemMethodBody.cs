@@ -23,7 +23,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public float3[] Velocities { get; }
         public int Resets => m_Status.ResetCount;
 
-        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps)
+        /// <param name="cgIterations">Implicit Euler: cap on CG iterations per substep; 0 = the solver's default.</param>
+        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps, int cgIterations = 0)
         {
             var issues = new List<SoftBodyIssue>();
             m_Model = FemModelData.Create(setup.Mesh, setup.Material, setup.Pinned ?? new bool[setup.Mesh.NodeCount], issues)
@@ -32,6 +33,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.Model = model;
             p.Integrator = integrator;
             p.Substeps = substeps;
+            if (cgIterations > 0)
+                p.CgIterations = cgIterations;
             p.SleepSpeed = 0f;
             p.ParticleRadius = setup.ParticleRadius;
             p.Friction = setup.Friction;

@@ -27,7 +27,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Residual of the calibration fit (<see cref="MassSpringCalibration.Result.Residual"/>).</summary>
         public double CalibrationResidual { get; }
 
-        public MassSpringMethodBody(MethodBodySetup setup, MassSpringIntegrator integrator, int substeps)
+        /// <param name="cgIterations">Implicit Euler: cap on CG iterations per substep; 0 = the solver's default.</param>
+        public MassSpringMethodBody(MethodBodySetup setup, MassSpringIntegrator integrator, int substeps, int cgIterations = 0)
         {
             var issues = new List<SoftBodyIssue>();
             m_Model = MassSpringModelData.FromMesh(setup.Mesh, setup.Material, MassSpringBuildSettings.Default, issues,
@@ -37,6 +38,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             MassSpringParameters p = MassSpringParameters.Default;
             p.Integrator = integrator;
             p.Substeps = substeps;
+            if (cgIterations > 0)
+                p.CgIterations = cgIterations;
             p.SleepSpeed = 0f;
             p.ParticleRadius = setup.ParticleRadius;
             p.Friction = setup.Friction;
