@@ -3,7 +3,7 @@ using System.Collections.Generic;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
-    /// <summary>Reference values of the cantilever scene, computed once per setup.</summary>
+    /// <summary>Reference values of the cantilever scene (of the continuum: the same for every mesh), computed once per material.</summary>
     public sealed class CantileverTargets
     {
         /// <summary>Static tip deflection under the small load (m).</summary>
@@ -23,13 +23,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             "References: the float64 FEM reference (Q2 hexahedra, Neo-Hookean, Newton statics, inverse iteration for the frequency) at 1, 2 " +
             "and 3 elements across the thickness, Richardson-extrapolated; Euler–Bernoulli qL⁴/(8EI) for the signed small-load column.";
 
-        static readonly Dictionary<MethodBodySetup, CantileverTargets> s_Cache = new Dictionary<MethodBodySetup, CantileverTargets>();
+        static readonly Dictionary<(float, float, float), CantileverTargets> s_Cache =
+            new Dictionary<(float, float, float), CantileverTargets>();
 
         public static CantileverTargets Get(MethodBodySetup setup)
         {
             lock (s_Cache)
             {
-                if (s_Cache.TryGetValue(setup, out CantileverTargets t))
+                var key = (setup.Material.YoungsModulus, setup.Material.PoissonRatio, setup.Material.Density);
+                if (s_Cache.TryGetValue(key, out CantileverTargets t))
                     return t;
                 double e = setup.Material.YoungsModulus, nu = setup.Material.PoissonRatio, rho = setup.Material.Density;
                 double l = CantileverScene.Length, h = CantileverScene.Thickness, a = h * h, i = h * h * h * h / 12.0;
@@ -43,7 +45,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                         ReferenceResolutions).Estimate.Extrapolated,
                     Frequency = CantileverReference.FrequencyConvergence(l, h, h, e, nu, rho, ReferenceResolutions).Estimate.Extrapolated,
                 };
-                s_Cache[setup] = t;
+                s_Cache[key] = t;
                 return t;
             }
         }

@@ -15,7 +15,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Description =>
             "Summary of the method study scenes above: a method reaches an error level on all scenes at the largest of its per-scene " +
-            "costs to reach it (ns per particle per 1/60 s step); 'not reached' when some scene never gets there at the knob values swept.";
+            "costs to reach it (µs per 1/60 s step of the whole body); 'not reached' when some scene never gets there at the knob values swept.";
 
         public string ErrorMetricForPlot => null;
 
@@ -38,7 +38,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             table = table.OrderBy(t => t.All[1]).ThenBy(t => t.All[2]).ThenBy(t => t.PerScene.Count(c => double.IsPositiveInfinity(c))).ToList();
             var md = new StringBuilder();
-            md.AppendLine("Cost (ns per particle-step) to reach an error on every scene at once, and per scene to reach 5 %:");
+            md.AppendLine("Cost (µs per step of the whole body) to reach an error on every scene at once, and per scene to reach 5 %:");
             md.AppendLine();
             md.Append("| rank | method | all scenes ≤ 1 % | ≤ 5 % | ≤ 20 % |");
             foreach (string s in scenes)
@@ -59,6 +59,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return md.ToString();
         }
 
-        static string C(double ns) => double.IsNaN(ns) ? "–" : double.IsPositiveInfinity(ns) ? "not reached" : ns.ToString(ns < 100 ? "0.0" : "0");
+        static string C(double us) => double.IsNaN(us) ? "–" : double.IsPositiveInfinity(us) ? "not reached" : us.ToString(us < 100 ? "0.0" : "0");
     }
 }

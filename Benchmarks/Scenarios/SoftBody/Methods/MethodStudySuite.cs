@@ -21,21 +21,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(bool quick)
         {
             foreach (MethodVariant v in MethodCatalog.Variants)
+            foreach (int resolution in v.Resolutions.Length > 0 && !quick ? v.Resolutions : new[] { 0 })
             foreach (int knob in quick ? v.QuickKnobs : v.Knobs)
-                yield return new MethodStudyScenario(m_Scene, v, knob);
+                yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }
 
         public string Series(ScenarioOutcome row) => MethodStudyRanking.Family(row.Method);
         public string PointLabel(ScenarioOutcome row) => MethodStudyRanking.Knob(row.Method);
-        public string CostLabel => "ns per particle per 1/60 s step (all substeps and iterations), median";
-        public double Cost(ScenarioOutcome row) => row.NsPerItem;
+        public string CostLabel => "µs per 1/60 s step of the whole body (all substeps and iterations), median";
+        public double Cost(ScenarioOutcome row) => MethodStudyRanking.MicrosecondsPerStep(row);
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
         {
             MethodStudyRanking.Record(Name, rows);
             var md = new StringBuilder();
             md.AppendLine($"Cheapest setting of each method that reaches an error ('{StudyScene.Error}') of 1 %, 5 % and 20 % " +
-                          "(ns per particle-step; ranked by the cost to reach 5 %, then 20 %):");
+                          "(µs per step of the whole body; ranked by the cost to reach 5 %, then 20 %):");
             md.AppendLine();
             md.Append(MethodStudyRanking.Table(rows));
             return md.ToString();
@@ -51,7 +52,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>How cost is counted, for the descriptions.</summary>
         public const string CostNote =
             "One item is one particle through one 1/60 s step of the scene (all substeps and iterations): ns/item is the cost per particle " +
-            "per step, the median of the timed steps after warm-up (managed .NET, one thread). '" + StudyScene.Error + "' is the worst of the " +
+            "per step, the median of the timed steps after warm-up (managed .NET, one thread); the figure and the ranking count µs per step " +
+            "of the whole body (ns/item × particles), so that finer meshes cost more. '" + StudyScene.Error + "' is the worst of the " +
             "scene's relative errors; NaN = the method diverged or the guard reset it.";
 
         static readonly Dictionary<string, IReadOnlyList<ScenarioOutcome>> s_Scenes = new Dictionary<string, IReadOnlyList<ScenarioOutcome>>();
@@ -71,15 +73,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static string Family(string method) => method.Split(';')[0].Trim();
         public static string Knob(string method) => method.Contains(";") ? method.Substring(method.IndexOf(';') + 1).Trim() : "";
 
-        /// <summary>Cheapest cost (ns per particle-step) among rows with error ≤ <paramref name="threshold"/>, or +∞.</summary>
+        /// <summary>Cost of a row: µs per 1/60 s step of the whole body (ns per particle-step × the row's particle count).</summary>
+        public static double MicrosecondsPerStep(ScenarioOutcome row) => row.NsPerItem * row.Value(StudyScene.Particles) * 1e-3;
+
+        /// <summary>Cheapest cost (µs per step of the body) among rows with error ≤ <paramref name="threshold"/>, or +∞.</summary>
         public static double CostToReach(IEnumerable<ScenarioOutcome> rows, double threshold)
         {
             double best = double.PositiveInfinity;
             foreach (ScenarioOutcome r in rows)
             {
                 double e = r.Value(StudyScene.Error);
-                if (e <= threshold && r.NsPerItem < best)
-                    best = r.NsPerItem;
+                if (e <= threshold && MicrosecondsPerStep(r) < best)
+                    best = MicrosecondsPerStep(r);
             }
             return best;
         }
@@ -100,7 +105,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return md.ToString();
         }
 
-        static string Cost(double ns) => double.IsPositiveInfinity(ns) ? "not reached" : ns < 100 ? ns.ToString("0.0") + " ns" : ns.ToString("0") + " ns";
+        static string Cost(double us) => double.IsPositiveInfinity(us) ? "not reached" : us < 100 ? us.ToString("0.0") + " µs" : us.ToString("0") + " µs";
 
         public static string Percent(double e) => double.IsNaN(e) ? "diverged" : (100 * e).ToString(e < 0.001 ? "0.000" : e < 0.1 ? "0.00" : "0.0") + " %";
     }

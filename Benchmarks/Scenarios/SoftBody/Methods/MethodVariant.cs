@@ -13,19 +13,29 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public readonly int[] Knobs;
         /// <summary>Knob values of the quick run (empty = the method is left out of the quick run).</summary>
         public readonly int[] QuickKnobs;
+        /// <summary>
+        /// Resolutions swept (cells across the body's thinnest side; the scene sets the others from it), each with every
+        /// knob value; empty = the scene's default resolution only.
+        /// </summary>
+        public readonly int[] Resolutions;
         /// <summary>Builds a body of the setup with a knob value; the cell size (m) sizes shape matching's clusters.</summary>
         public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
 
-        public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create)
+        public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create,
+            int[] resolutions = null)
         {
             Family = family;
             KnobUnit = knobUnit;
             Knobs = knobs;
             QuickKnobs = quickKnobs;
             Create = create;
+            Resolutions = resolutions ?? new int[0];
         }
 
-        /// <summary>"family, knob unit", the scenario's method text (the figure splits it at the comma before the knob).</summary>
+        /// <summary>"family; knob unit", the scenario's method text (the figure splits it at the semicolon before the knob).</summary>
         public string Label(int knob) => $"{Family}; {knob} {KnobUnit}";
+
+        /// <summary>"family; knob unit, n across" for a swept resolution (0 = the scene's default: no suffix).</summary>
+        public string Label(int knob, int resolution) => resolution > 0 ? $"{Label(knob)}, {resolution} across" : Label(knob);
     }
 }

@@ -28,6 +28,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Edge of one cell of the box (m): shape matching's cluster size is a multiple of it.</summary>
         public abstract float CellSize { get; }
 
+        /// <summary>Metric: particles of the body measured (the cost per step is ns per particle-step times this).</summary>
+        public const string Particles = "particles";
+
+        /// <summary>The body at a resolution (cells across its thinnest side); 0 = <see cref="Setup"/>.</summary>
+        public virtual MethodBodySetup SetupAt(int resolution) => Setup;
+        /// <summary>Cell edge (m) of <see cref="SetupAt"/>; 0 = <see cref="CellSize"/>.</summary>
+        public virtual float CellSizeAt(int resolution) => CellSize;
+
         /// <summary>Uniform acceleration of the timed frames (m/s²).</summary>
         protected virtual float3 TimedGravity => new float3(0f, -9.81f, 0f);
 
@@ -40,10 +48,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>
-        /// Runs the scene's measurements on bodies of <paramref name="build"/> (one per setup the scene needs) and returns
-        /// the metrics, <see cref="Error"/> first. A body that diverged gives NaN errors.
+        /// Runs the scene's measurements on bodies of <paramref name="build"/> made from <paramref name="setup"/> (one of
+        /// <see cref="SetupAt"/>; one body per material the scene needs) and returns the metrics, <see cref="Error"/> first.
+        /// A body that diverged gives NaN errors.
         /// </summary>
-        public abstract IReadOnlyList<Metric> Measure(Func<MethodBodySetup, IMethodBody> build);
+        public abstract IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build);
 
         /// <summary>|a/b − 1|, NaN when a is not finite.</summary>
         protected static double Relative(double value, double reference) =>
