@@ -23,7 +23,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public float3[] Velocities { get; }
         public int Resets => m_Status.ResetCount;
 
-        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps)
+        /// <summary>A body of the setup; <paramref name="cgIterations"/>, <paramref name="cgTolerance"/> and <paramref name="iterations"/> replace the defaults (conjugate-gradient cap and relative residual of implicit Euler, XPBD iterations per substep) when positive.</summary>
+        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps,
+            int cgIterations = 0, float cgTolerance = 0f, int iterations = 0)
         {
             var issues = new List<SoftBodyIssue>();
             m_Model = FemModelData.Create(setup.Mesh, setup.Material, setup.Pinned ?? new bool[setup.Mesh.NodeCount], issues)
@@ -32,6 +34,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.Model = model;
             p.Integrator = integrator;
             p.Substeps = substeps;
+            if (cgIterations > 0)
+                p.CgIterations = cgIterations;
+            if (cgTolerance > 0f)
+                p.CgTolerance = cgTolerance;
+            if (iterations > 0)
+                p.Iterations = iterations;
             p.SleepSpeed = 0f;
             p.ParticleRadius = setup.ParticleRadius;
             p.Friction = setup.Friction;
