@@ -23,8 +23,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public float3[] Velocities { get; }
         public int Resets => m_Status.ResetCount;
 
-        /// <param name="cgIterations">Implicit Euler: cap on CG iterations per substep; 0 = the solver's default.</param>
-        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps, int cgIterations = 0)
+        /// <summary>A body of the setup; <paramref name="cgIterations"/>, <paramref name="cgTolerance"/> and <paramref name="iterations"/> replace the defaults (conjugate-gradient cap and relative residual of implicit Euler, XPBD iterations per substep) when positive.</summary>
+        public FemMethodBody(MethodBodySetup setup, FemMaterialModel model, FemIntegrator integrator, int substeps,
+            int cgIterations = 0, float cgTolerance = 0f, int iterations = 0)
         {
             var issues = new List<SoftBodyIssue>();
             m_Model = FemModelData.Create(setup.Mesh, setup.Material, setup.Pinned ?? new bool[setup.Mesh.NodeCount], issues)
@@ -35,6 +36,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.Substeps = substeps;
             if (cgIterations > 0)
                 p.CgIterations = cgIterations;
+            if (cgTolerance > 0f)
+                p.CgTolerance = cgTolerance;
+            if (iterations > 0)
+                p.Iterations = iterations;
             p.SleepSpeed = 0f;
             p.ParticleRadius = setup.ParticleRadius;
             p.Friction = setup.Friction;
