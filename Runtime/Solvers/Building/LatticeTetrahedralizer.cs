@@ -103,12 +103,7 @@ namespace SoftBodyDynamics.Solvers
                     $"{topology.DegenerateTriangleCount} of {topology.TriangleCount} triangles are degenerate (zero area, or two corners welded into one point); the first is triangle {topology.FirstDegenerateTriangle}. They are ignored; remove them in the modelling tool to silence this.")));
             if (!topology.IsClosed)
             {
-                string why = topology.BoundaryEdgeCount > 0
-                    ? Invariant($"{topology.BoundaryEdgeCount} edges belong to only one triangle (the first to triangle {topology.FirstBoundaryTriangle})")
-                    : topology.NonManifoldEdgeCount > 0
-                        ? Invariant($"{topology.NonManifoldEdgeCount} edges are shared by more than two triangles (the first by triangle {topology.FirstNonManifoldTriangle})")
-                        : "no triangle has three distinct corners";
-                int index = topology.BoundaryEdgeCount > 0 ? topology.FirstBoundaryTriangle : topology.FirstNonManifoldTriangle;
+                string why = topology.OpeningDescription(out int index);
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.VolumeMeshNotClosed, index, Invariant(
                     $"The mesh is not closed: {why}, so it encloses no volume to fill with tetrahedra. Close the holes in the mesh, or raise WeldTolerance if its seams are split.")));
                 return false;

@@ -43,6 +43,20 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Every edge used by two triangles is traversed once in each direction.</summary>
         public bool IsConsistentlyWound => InconsistentEdgeCount == 0;
 
+        /// <summary>
+        /// Why the surface is not closed, for an issue message ("12 edges belong to only one triangle (the first to
+        /// triangle 4)"), and the triangle the issue should name. Only meaningful when <see cref="IsClosed"/> is false.
+        /// </summary>
+        public string OpeningDescription(out int triangle)
+        {
+            triangle = BoundaryEdgeCount > 0 ? FirstBoundaryTriangle : FirstNonManifoldTriangle;
+            return BoundaryEdgeCount > 0
+                ? System.FormattableString.Invariant($"{BoundaryEdgeCount} edges belong to only one triangle (the first to triangle {FirstBoundaryTriangle})")
+                : NonManifoldEdgeCount > 0
+                    ? System.FormattableString.Invariant($"{NonManifoldEdgeCount} edges are shared by more than two triangles (the first by triangle {FirstNonManifoldTriangle})")
+                    : "no triangle has three distinct corners";
+        }
+
         /// <summary>True when a triangle repeats a particle: it has no edges and is skipped by topology and inside tests.</summary>
         public static bool RepeatsParticle(int a, int b, int c) => a == b || b == c || c == a;
 

@@ -107,12 +107,7 @@ namespace SoftBodyDynamics.Solvers
         {
             if (!topology.IsClosed)
             {
-                string why = topology.BoundaryEdgeCount > 0
-                    ? Invariant($"{topology.BoundaryEdgeCount} edges belong to only one triangle (the first to triangle {topology.FirstBoundaryTriangle})")
-                    : topology.NonManifoldEdgeCount > 0
-                        ? Invariant($"{topology.NonManifoldEdgeCount} edges are shared by more than two triangles")
-                        : "no triangle has three distinct corners";
-                int index = topology.BoundaryEdgeCount > 0 ? topology.FirstBoundaryTriangle : topology.FirstNonManifoldTriangle;
+                string why = topology.OpeningDescription(out int index);
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.NotClosed, index, Invariant(
                     $"The mesh is not closed: {why}, so it has no inside. Interior particles were skipped; close the holes in the mesh, or raise WeldTolerance if its seams are split.")));
                 return false;

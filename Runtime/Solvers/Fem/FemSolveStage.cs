@@ -91,11 +91,8 @@ namespace SoftBodyDynamics.Solvers
             var v = body.Velocities;
             var slots = new Span<float3>(m_Slots, 4 * m_ElementCount);
             ReadOnlySpan<float> w = model.InverseMasses;
-            // A pinned node does not move: the shared step gave it the substep's gravity, which would reach the damping
-            // and the implicit system's K v as a spurious velocity (the step zeroes it after the solve anyway).
-            for (int i = 0; i < x.Length; i++)
-                if (!(w[i] > 0f))
-                    v[i] = float3.zero;
+            // Pinned nodes arrive at rest: the shared step zeroes their velocity before the solve (FemSolver.Body passes
+            // the inverse masses), so no spurious velocity reaches the damping or the implicit system's K v.
             switch (m_Integrator)
             {
                 case FemIntegrator.ImplicitEuler:
