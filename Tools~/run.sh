@@ -2,7 +2,8 @@
 # The main job: runs every benchmark scenario headless, prints the table (scenario, method, size,
 # ms per step, ns per item, items per second, error metrics) and writes a Markdown report with PNG figures.
 # Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT]
-# The method study (suites named MethodStudy*) runs only when --filter names it: bash Tools~/run.sh --filter MethodStudy
+# The full run includes the method study (suites MethodStudy*, tens of minutes); --quick runs a few points of each suite,
+# --filter TEXT only the suites whose name contains TEXT (e.g. --filter MethodStudyCantilever).
 # Default report folder: Reports~/latest (relative to the package root).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

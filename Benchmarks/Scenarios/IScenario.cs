@@ -61,24 +61,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         string ErrorMetricForPlot { get; }
     }
 
-    /// <summary>
-    /// A suite the runner leaves out unless <c>--filter</c> names it (part of its name): studies that take minutes (the
-    /// method study) stay out of the default and quick runs.
-    /// </summary>
-    public interface IScenarioSuiteOptIn
-    {
-    }
-
-    /// <summary>
-    /// A suite that runs more scenarios when <c>--filter</c> names it (part of its name): sizes too slow for the default
-    /// run (the 100k-particle bodies of the method throughput suite) run only on request.
-    /// </summary>
-    public interface IScenarioSuiteWhenNamed
-    {
-        /// <summary>Scenarios of a run whose filter names the suite (used instead of <see cref="IScenarioSuite.Scenarios"/>).</summary>
-        IEnumerable<IScenario> NamedScenarios(bool quick);
-    }
-
     /// <summary>One row of a finished suite, as a summary sees it.</summary>
     public readonly struct ScenarioOutcome
     {

@@ -31,14 +31,10 @@ namespace SoftBodyDynamics.Runner
             {
                 if (options.Filter != null && suite.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) < 0)
                     continue;
-                if (options.Filter == null && suite is IScenarioSuiteOptIn)
-                    continue;
                 var suiteResult = new SuiteResult(suite);
                 Console.WriteLine();
                 Console.WriteLine($"== {suite.Name}");
-                var scenarios = new List<IScenario>(options.Filter != null && suite is IScenarioSuiteWhenNamed named
-                    ? named.NamedScenarios(options.Quick)
-                    : suite.Scenarios(options.Quick));
+                var scenarios = new List<IScenario>(suite.Scenarios(options.Quick));
                 var table = new TablePrinter(Console.Out, scenarios);
                 table.PrintHeader();
                 foreach (IScenario scenario in scenarios)

@@ -88,7 +88,8 @@ namespace SoftBodyDynamics.Runner
             string metric = s.Suite.ErrorMetricForPlot;
             // A suite without an error reference (pure throughput) names no metric and gets no accuracy figure.
             if (string.IsNullOrEmpty(metric)) return null;
-            var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric)).ToList();
+            // Rows with a finite error only: a diverged point has no place on a log axis (the tables list it).
+            var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric) && double.IsFinite(r.MetricValue(metric))).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
             var figure = s.Suite as IScenarioSuiteFigure;

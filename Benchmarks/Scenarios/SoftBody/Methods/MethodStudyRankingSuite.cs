@@ -9,7 +9,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// 20 % error on every scene at once (the largest of the per-scene costs), and the per-scene cost to reach 5 %.
     /// Runs no scenario of its own.
     /// </summary>
-    public sealed class MethodStudyRankingSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteOptIn
+    public sealed class MethodStudyRankingSuite : IScenarioSuite, IScenarioSuiteSummary
     {
         public string Name => "MethodStudyRanking";
 

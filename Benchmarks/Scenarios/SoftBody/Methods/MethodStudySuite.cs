@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// One scene of the method study as a suite: every method of <see cref="MethodCatalog"/> at every knob value, one
     /// table, one error-against-cost figure (one curve per method) and a ranking by the cost to reach 1 %, 5 % and 20 %.
     /// </summary>
-    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteOptIn, IScenarioSuiteFigure
+    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
     {
         readonly StudyScene m_Scene;
 

@@ -7,10 +7,10 @@ using SoftBodyDynamics.Solvers;
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
     /// <summary>
-    /// Throughput of every soft-body method on one jelly cube of about 1k, 10k and (when the filter names the suite) 100k
+    /// Throughput of every soft-body method on one jelly cube of about 1k, 10k and 100k
     /// nodes resting on a floor: ns per particle-substep per method and size, and the log–log slope of step time against N.
     /// </summary>
-    public sealed class SoftBodyMethodsThroughputSuite : IScenarioSuite, IScenarioSuiteOptIn, IScenarioSuiteWhenNamed, IScenarioSuiteSummary
+    public sealed class SoftBodyMethodsThroughputSuite : IScenarioSuite, IScenarioSuiteSummary
     {
         /// <summary>One row: a label, fixed substeps per step and how to build the body (setup, cell size in m).</summary>
         public sealed class Variant
@@ -40,10 +40,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Shape-matching cluster width in cells: cluster centres 1.5 cells apart, 3 to 4 nodes per axis in a cluster.</summary>
         public const float ClusterCells = 3f;
 
-        /// <summary>Nodes per axis of a run that does not name the suite (the runner leaves it out; a harness that lists every suite): 10³ = 1000 and 22³ = 10648 nodes.</summary>
-        public static readonly int[] Edges = { 10, 22 };
-        /// <summary>Nodes per axis when the filter names the suite: 10³, 22³ and 46³ = 97336 nodes.</summary>
-        public static readonly int[] NamedEdges = { 10, 22, 46 };
+        /// <summary>Nodes per axis of the full run: 10³ = 1000, 22³ = 10648 and 46³ = 97336 nodes.</summary>
+        public static readonly int[] Edges = { 10, 22, 46 };
         /// <summary>Nodes per axis of the quick run: 10³ = 1000 nodes.</summary>
         public static readonly int[] QuickEdges = { 10 };
 
@@ -78,8 +76,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string ErrorMetricForPlot => null;
 
         public IEnumerable<IScenario> Scenarios(bool quick) => Build(quick ? QuickEdges : Edges);
-
-        public IEnumerable<IScenario> NamedScenarios(bool quick) => Build(quick ? QuickEdges : NamedEdges);
 
         static IEnumerable<IScenario> Build(int[] edges)
         {
