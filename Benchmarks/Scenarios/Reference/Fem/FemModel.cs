@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// the full 3 × 3 × 3 rule integrates their stiffness exactly (see <see cref="CantileverReference"/> for the observed
     /// mesh convergence).
     /// </summary>
-    public sealed class FemModel
+    public sealed partial class FemModel
     {
         /// <summary>The mesh.</summary>
         public readonly FemBoxMesh Mesh;

@@ -9,8 +9,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public bool Converged;
         /// <summary>Load steps taken (static) or time steps (dynamic).</summary>
         public int Steps;
-        /// <summary>Newton iterations over all steps (= tangent factorisations).</summary>
+        /// <summary>Newton iterations over all steps (= tangent factorisations, except in <see cref="FemNewmark.ReuseTangent"/> runs).</summary>
         public int NewtonIterations;
+        /// <summary>Tangent factorisations over all steps (counted by <see cref="FemNewmark"/>).</summary>
+        public int Factorizations;
         /// <summary>The largest final ‖r‖ / ‖f_ext‖ over the steps (static), or ‖r‖ / ‖ref‖ (dynamic).</summary>
         public double RelativeResidual;
     }
