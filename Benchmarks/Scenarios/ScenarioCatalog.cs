@@ -14,6 +14,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new ShapeMatchingConservationSuite(),
             new MethodStudySuite(new CantileverScene()),
             new MethodStudySuite(new SquashScene()),
+            new MethodStudyStabilitySuite(),
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
         };

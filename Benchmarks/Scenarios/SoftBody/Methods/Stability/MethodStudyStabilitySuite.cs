@@ -1,0 +1,132 @@
+using System;
+using System.Collections.Generic;
+using System.Text;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// The stability part of the method study: for every method family of <see cref="MethodCatalog"/> at one substep, the
+    /// largest stable step of a stiff pinned cube against the explicit limits of the mass-spring network and of FEM, and
+    /// what the method does with four hard cases at a game frame. Takes minutes; no error-against-cost figure.
+    /// </summary>
+    public sealed class MethodStudyStabilitySuite : IScenarioSuite, IScenarioSuiteSummary
+    {
+        /// <summary>The suite's name (the runner's <c>--filter</c>).</summary>
+        public const string SuiteName = "MethodStudyStability";
+
+        static readonly object s_Lock = new object();
+        static StabilityCube s_Cube;
+
+        /// <summary>The study's cube (<see cref="StabilityCube.StiffMaterial"/>, 0.1 m, 4³ cells), built once.</summary>
+        public static StabilityCube Cube
+        {
+            get
+            {
+                lock (s_Lock)
+                    return s_Cube ??= new StabilityCube(StabilityCube.StiffMaterial);
+            }
+        }
+
+        public string Name => SuiteName;
+        public string ErrorMetricForPlot => null;
+
+        public string Description =>
+            $"A {StabilityCube.DefaultSize} m cube of {StabilityCube.DefaultCells}³ cells (6 tetrahedra each, " +
+            $"{(StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1)} particles) of a stiff material " +
+            "(E = 10 MPa, ν = 0.45, ρ = 1100 kg/m³, ζ = 0.1), bottom face pinned, gravity on, started from a 10 % compression along y " +
+            "about its bottom face. Largest stable step ('" + MethodStudyStabilityScenario.MaxStep + "', ms): one step per frame at " +
+            $"{MethodStudyStabilityScenario.StepKnob} substep; a run of dt is bounded when for T = max({BoundedRun.MinTime} s, {BoundedRun.MinSteps} steps) " +
+            "the NaN guard never resets the body, every position and velocity stays finite, the kinetic energy stays below " +
+            $"{StabilityCube.KineticEnergyFactor}× (U₀ + M g L) (U₀ = ½(λ+2μ)ε²V, the linear strain energy of the start) and the shape " +
+            $"deviation (largest node distance from the rest shape after removing the best-fit rigid motion) stays below {StabilityCube.DeformationFactor}× the cube size; " +
+            $"dt is bisected in log space between {StableStepSearch.MinStep:0e0} s (assumed bounded) and {StableStepSearch.MaxStep} s (a method bounded there " +
+            $"is capped) to a factor {StableStepSearch.Resolution}, then dt_max/2, dt_max/4 and dt_max·2ᵏ below 1 s are run too ('{MethodStudyStabilityScenario.Monotone}' = 1 " +
+            $"when the first two are bounded and none of the others; '{MethodStudyStabilityScenario.BoundedAbove}' = the largest of the others that was bounded). " +
+            $"'{MethodStudyStabilityScenario.Bound}': the explicit limit √(β² + 4/ω_max²) − β of the method's own model (MassSpringStability or FEM ω_max by power " +
+            $"iteration, β its Rayleigh coefficient). '{MethodStudyStabilityScenario.FailureReason}': 1 reset, 2 non-finite, 3 kinetic energy, 4 deformation. " +
+            $"Hard cases on the same cube without pins and without gravity, at the method's first knob value of the catalog and 1/60 s steps for {MethodStudyStabilityScenario.HardCaseTime} s " +
+            $"(huge step: {HardCases.HugeStep} s steps from a {HardCases.HugeStepCompression * 100} % compression): outcome 0 recovers (no reset, within " +
+            $"{HardCaseRun.RecoveredDeviation * 100} % of the rest shape), 1 reset (the guard reset it once, then it stayed at rest), 2 bounded (at most one reset, " +
+            "finite, not back), 3 diverged (more resets, or deformed beyond 2 sizes); '… dev' is the final shape deviation over the cube size. " +
+            "ns/item: one particle through one step of dt_max (managed .NET, one thread).";
+
+        public IEnumerable<IScenario> Scenarios(bool quick)
+        {
+            // The quick run keeps the methods the catalog keeps in its quick run (those with quick knob values).
+            foreach (MethodVariant v in MethodCatalog.Variants)
+                if (!quick || v.QuickKnobs.Length > 0)
+                    yield return new MethodStudyStabilityScenario(() => Cube, v);
+        }
+
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        {
+            StabilityCube cube = Cube;
+            var md = new StringBuilder();
+            md.AppendLine($"Explicit limits of the cube: mass-spring {Ms(cube.MassSpringExplicitStep)}, FEM {Ms(cube.FemExplicitStep)} " +
+                          "(√(β² + 4/ω_max²) − β). † = not monotone: dt_max/2 or dt_max/4 was not bounded, or a step dt_max·2ᵏ above it was " +
+                          "(the largest such is given). " +
+                          $"Hard cases at the first knob of the catalog, {MethodStudyStabilityScenario.HardCaseTime} s; in brackets the final " +
+                          "shape deviation over the cube size, or the resets. 'reset' = the guard reset the body once (the state written, or an " +
+                          "explicit method above its stable step blowing up at the first motion) and it then stayed at its rest shape.");
+            md.AppendLine();
+            float asked = ShapeMatchingCalibration.Frequency(cube.Pinned.Material, cube.Pinned.CalibrationLength,
+                ShapeMatchingCalibration.LinearCoefficient);
+            if (asked > ShapeMatchingParameters.MaxFrequency)
+                md.AppendLine($"Shape matching: the calibrated frequency of this material, {asked:0} Hz, is above ShapeMatchingParameters.MaxFrequency " +
+                              $"and runs at {ShapeMatchingParameters.MaxFrequency:0} Hz (about {asked * asked / (ShapeMatchingParameters.MaxFrequency * ShapeMatchingParameters.MaxFrequency):0}× " +
+                              "softer than asked); at one substep its goal pull nearly vanishes where f·dt is a whole number (dt = 1, 2, 3 … ms), where " +
+                              "the cube sags freely under gravity.");
+            md.AppendLine();
+            md.Append("| method | dt_max | explicit bound | inverted | flattened | huge step | NaN input | compute per simulated s at dt_max |");
+            md.AppendLine();
+            md.AppendLine("|---|---:|---:|---|---|---|---|---:|");
+            foreach (ScenarioOutcome r in rows)
+            {
+                string family = MethodStudyRanking.Family(r.Method);
+                double dt = r.Value(MethodStudyStabilityScenario.MaxStep);
+                double bound = r.Value(MethodStudyStabilityScenario.Bound);
+                bool capped = r.Value(MethodStudyStabilityScenario.Capped) == 1;
+                string dtCell = capped ? $"≥ {Ms(dt * 1e-3)} (cap)" : Ms(dt * 1e-3);
+                if (!double.IsNaN(bound))
+                    dtCell += $" = {(capped ? "≥ " : "")}{Ratio(dt / bound)}× bound";
+                if (r.Value(MethodStudyStabilityScenario.Monotone) == 0)
+                {
+                    double above = r.Value(MethodStudyStabilityScenario.BoundedAbove);
+                    var notes = new List<string>();
+                    if (r.Value(MethodStudyStabilityScenario.BoundedBelow) == 0)
+                        notes.Add("dt_max/2 or /4 not bounded");
+                    if (above > 0)
+                        notes.Add($"bounded again at {Ms(above * 1e-3)}");
+                    dtCell += $" † ({string.Join("; ", notes)})";
+                }
+                md.Append($"| {family} | {dtCell} | {(double.IsNaN(bound) ? "–" : Ms(bound * 1e-3))} |");
+                foreach (HardCase c in HardCases.All)
+                    md.Append($" {Case(r, HardCases.Label(c))} |");
+                // µs per step of the whole body over the step: compute per simulated second.
+                double perSecond = r.NsPerItem * r.Value(StudyScene.Particles) * 1e-9 / (dt * 1e-3);
+                md.AppendLine($" {Seconds(perSecond)} |");
+            }
+            return md.ToString();
+        }
+
+        static string Case(ScenarioOutcome r, string label)
+        {
+            double code = r.Value(label);
+            if (double.IsNaN(code))
+                return "–";
+            var outcome = (HardCaseOutcome)(int)code;
+            double dev = r.Value(label + MethodStudyStabilityScenario.DeviationSuffix);
+            double resets = r.Value(label + MethodStudyStabilityScenario.ResetsSuffix);
+            string detail = outcome == HardCaseOutcome.Diverged && resets > 1 ? $"{resets:0} resets" : MethodStudyRanking.Percent(dev);
+            return $"{HardCaseRun.Label(outcome)} ({detail})";
+        }
+
+        static string Ratio(double r) => r < 10 ? r.ToString("0.00") : r.ToString("0");
+
+        static string Ms(double seconds) =>
+            seconds >= 1e-2 ? $"{seconds * 1e3:0} ms" : seconds >= 1e-3 ? $"{seconds * 1e3:0.0} ms" : $"{seconds * 1e3:0.000} ms";
+
+        static string Seconds(double s) => double.IsFinite(s) ? s >= 1 ? $"{s:0.0} s" : $"{s * 1e3:0.0} ms" : "–";
+    }
+}
