@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             MethodStudyRanking.Record(Name, rows);
             var md = new StringBuilder();
             md.AppendLine($"Cheapest setting of each method that reaches an error ('{StudyScene.Error}') of 1 %, 5 % and 20 % " +
-                          "(µs per step of the whole body; ranked by the cost to reach 5 %, then 20 %):");
+                          "(µs per step of the whole body; ranked by the cost to reach 5 %, then 20 %, then the best error; methods that only diverged last):");
             md.AppendLine();
             md.Append(MethodStudyRanking.Table(rows));
             return md.ToString();
@@ -95,7 +95,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var families = rows.GroupBy(r => Family(r.Method))
                 .Select(g => (Family: g.Key, Costs: Thresholds.Select(t => CostToReach(g, t)).ToArray(),
                     Best: g.Select(r => r.Value(StudyScene.Error)).Where(double.IsFinite).DefaultIfEmpty(double.NaN).Min()))
-                .OrderBy(f => f.Costs[1]).ThenBy(f => f.Costs[2]).ThenBy(f => f.Best).ToList();
+                .OrderBy(f => f.Costs[1]).ThenBy(f => f.Costs[2]).ThenBy(f => double.IsNaN(f.Best)).ThenBy(f => f.Best).ToList();
             var md = new StringBuilder();
             md.AppendLine("| rank | method | to 1 % | to 5 % | to 20 % | best error |");
             md.AppendLine("|---:|---|---:|---:|---:|---:|");
