@@ -264,20 +264,62 @@ namespace SoftBodyDynamics.Tests.Solvers
             return p;
         }
 
-        static double TotalEnergy(FemTestBody body)
+        /// <summary>
+        /// The energy internal forces can dissipate (J): the elastic energy above rest, Σ V (Ψ(F) − Ψ(I)), plus the kinetic
+        /// energy less that of the rigid motion with the same momentum P and angular momentum L (both conserved by internal
+        /// forces): ½|P|²/M + ½ Lᵀ I⁻¹ L, I the inertia tensor about the centre of mass. In double.
+        /// </summary>
+        static double DeformationEnergy(FemTestBody body)
         {
-            double e = 0;
-            for (int i = 0; i < body.Positions.Length; i++)
-                e += 0.5 * body.Data.Masses[i] * math.lengthsq(body.Velocities[i]);
+            float3[] x = body.Positions, v = body.Velocities;
+            float[] m = body.Data.Masses;
+            double mass = 0, kinetic = 0;
+            var c = new double[3];
+            var p = new double[3];
+            for (int i = 0; i < x.Length; i++)
+            {
+                mass += m[i];
+                kinetic += 0.5 * m[i] * math.lengthsq(v[i]);
+                for (int a = 0; a < 3; a++)
+                {
+                    c[a] += m[i] * (double)x[i][a];
+                    p[a] += m[i] * (double)v[i][a];
+                }
+            }
+            var l = new double[3];
+            var inertia = new double[3, 3];
+            for (int i = 0; i < x.Length; i++)
+            {
+                var r = new double[3];
+                var u = new double[3];
+                for (int a = 0; a < 3; a++)
+                {
+                    r[a] = x[i][a] - c[a] / mass;
+                    u[a] = v[i][a] - p[a] / mass;
+                }
+                l[0] += m[i] * (r[1] * u[2] - r[2] * u[1]);
+                l[1] += m[i] * (r[2] * u[0] - r[0] * u[2]);
+                l[2] += m[i] * (r[0] * u[1] - r[1] * u[0]);
+                double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++)
+                        inertia[a, b] += m[i] * ((a == b ? rr : 0.0) - r[a] * r[b]);
+            }
+            double[,] inverse = Inverse(inertia);
+            double spin = 0;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++)
+                    spin += 0.5 * l[a] * inverse[a, b] * l[b];
+            double translation = 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / mass;
+            double elastic = 0;
             float lambdaSnh = FemElasticity.NeoHookeanLambda(body.Data.Mu, body.Data.Lambda);
             foreach (TetElement t in body.Data.Elements)
             {
                 int4 n = t.Nodes;
-                float3x3 f = FemElasticity.DeformationGradient(body.Positions[n.x], body.Positions[n.y], body.Positions[n.z],
-                    body.Positions[n.w], t.InverseRestShape);
-                e += t.RestVolume * FemElasticity.NeoHookeanEnergy(f, body.Data.Mu, lambdaSnh);
+                float3x3 f = FemElasticity.DeformationGradient(x[n.x], x[n.y], x[n.z], x[n.w], t.InverseRestShape);
+                elastic += t.RestVolume * (double)FemElasticity.NeoHookeanEnergyChange(float3x3.identity, f - float3x3.identity, body.Data.Mu, lambdaSnh);
             }
-            return e;
+            return elastic + kinetic - translation - spin;
         }
 
         /// <summary>
@@ -312,7 +354,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var body = new FemTestBody(data, Implicit(FemMaterialModel.NeoHookean, 1, float3.zero));
             float restVolume = body.Volume();
             Disturb(body);
-            double start = TotalEnergy(body);
+            double start = DeformationEnergy(body);
             for (int step = 0; step < 60; step++)
             {
                 FemStepReport report = body.Step(dt);
@@ -320,12 +362,15 @@ namespace SoftBodyDynamics.Tests.Solvers
                 Assert.That(report.IntegratorFallback, Is.False);
                 Assert.That(report.Integrator, Is.EqualTo(FemIntegrator.ImplicitEuler));
             }
-            double end = TotalEnergy(body);
+            double end = DeformationEnergy(body);
             TestContext.WriteLine($"h_max {hMax:G3} s = dt / {dt / hMax:G3}; energy {start:G4} J → {end:G4} J; " +
                                   $"min det F {body.MinDeterminant():G4}, volume {body.Volume() / restVolume:G5} of rest");
             Assert.That(body.AllFinite());
             Assert.That(body.MinDeterminant(), Is.GreaterThan(0f));
-            Assert.That(end, Is.LessThan(start), "backward Euler only dissipates");
+            // Backward Euler multiplies a mode's energy by 1/(1 + h²ω²) per step (less with its damping); the slowest mode of
+            // these bodies has hω > 1 at this step, so 60 steps leave far less than 1 % (measured ≤ 5e-5, round-off of the
+            // rigid-motion subtraction included).
+            Assert.That(end, Is.LessThan(0.01 * start), "backward Euler dissipates the deformation");
             Assert.That(math.abs(body.Volume() / restVolume - 1f), Is.LessThan(0.05f));
 
             // The same disturbance under symplectic Euler at this step blows up and the guard resets the body.
@@ -353,8 +398,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.CgTolerance = 1e-6f;
             var body = new FemTestBody(data, p);
             float3 startCenter = body.Status.LocalCenter;
-            for (int step = 0; step < 10; step++)
-                body.Step(1f);
+            // Steps of 0.2 s: backward Euler damps the first mode (5 Hz, hω ≈ 6) by ~40× per step, so 15 steps reach the
+            // static state to the CG tolerance. (Steps of 1 s follow the element rotations only to first order and leave
+            // a ±3 % step-to-step jitter of the sag with either model.)
+            for (int step = 0; step < 15; step++)
+                body.Step(0.2f);
             double sag = 0;
             int count = 0;
             for (int i = 0; i < mesh.NodeCount; i++)
@@ -367,19 +415,22 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         /// <summary>
-        /// At small load (tip sag ≈ 0.4 % of the length, largest strain ~3e-3) both models are linear elasticity to first
-        /// order, and implicit Euler at 1 s steps settles on the static state f(x) + Mg = 0 of each. The models differ at
-        /// second order in the strain (relative ~3e-3, and bending's tension and compression sides cancel its first
-        /// moment); the CG tolerance 1e-6 adds ~1e-5. Bound: 0.5 %.
+        /// At small load (tip sag ≈ 0.35 % of the length) both models are linear elasticity to first order (the Neo-Hookean λ
+        /// is re-parameterised to match at rest), and implicit Euler settles on the static state f(x) + Mg = 0 of each. The
+        /// models differ at second order in the strain, so the sags differ by a fraction of order the largest strain,
+        /// ε_max = M c / (E I) = (ρ g A L²/2)(h/2)/(E h⁴/12) ≈ 2.9e-3 at the clamp, which is the bound; the CG tolerance 1e-6
+        /// adds ~1e-4 of step-to-step jitter. Measured 3.5e-5.
         /// </summary>
         [Test]
         public void Cantilever_SmallLoadStaticSag_MatchesCoRotational()
         {
             double neoHookean = CantileverSag(FemMaterialModel.NeoHookean), coRotational = CantileverSag(FemMaterialModel.CoRotational);
             double relative = neoHookean / coRotational - 1.0;
-            TestContext.WriteLine($"tip sag: Neo-Hookean {neoHookean:G6} m, co-rotational {coRotational:G6} m, relative difference {relative:G3}");
+            const double side = 0.1, moment = 1000.0 * 9.81 * side * side * 1.0 / 2.0;
+            double strain = moment * (side / 2) / (1e8 * side * side * side * side / 12.0);
+            TestContext.WriteLine($"tip sag: Neo-Hookean {neoHookean:G6} m, co-rotational {coRotational:G6} m, relative difference {relative:G3}, ε_max {strain:G3}");
             Assert.That(coRotational, Is.GreaterThan(1e-3), "the beam sags");
-            Assert.That(Math.Abs(relative), Is.LessThan(5e-3));
+            Assert.That(Math.Abs(relative), Is.LessThan(strain));
         }
 
         static (uint, uint, uint) Bits(float3 v) => (math.asuint(v.x), math.asuint(v.y), math.asuint(v.z));
@@ -414,7 +465,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 for (int b = 0; b < elementBatches; b++)
                 {
                     int k = reverse ? elementBatches - 1 - b : b;
-                    FemForces.NeoHookeanTangents(model, x, rotations, 20, tangents, slots, k * batch, math.min(model.ElementCount, (k + 1) * batch));
+                    FemForces.NeoHookeanTangents(model, x, default, 0f, rotations, 20, tangents, slots, k * batch, math.min(model.ElementCount, (k + 1) * batch));
                 }
                 for (int b = 0; b < nodeBatches; b++)
                 {
