@@ -17,15 +17,16 @@ namespace SoftBodyDynamics.Solvers
     /// <c>(M + h C + h² K_R) Δv = h (f − (β + h) K_R v)</c>.
     /// </para>
     /// <para>
-    /// Stable Neo-Hookean: Newton's method on the backward-Euler equations (the stationarity of the incremental potential
-    /// Φ(v⁺) = ½‖v⁺ − v‖²_M + E(x + h v⁺) + h/2 v⁺ᵀ C v⁺ with C held at the iterate), from v₀ = v. Iteration k linearises
-    /// at x_k = x + h v_k with K_k the energy Hessian projected to positive semi-definite per element
-    /// (<see cref="NeoHookeanTangent"/>, Smith, de Goes &amp; Kim 2018, §4):
-    /// <c>(M + h C_k + h² K_k) δ = h (f(x_k) − β K_k v_k) − M (v_k − v)</c>, v_{k+1} = v_k + s δ.
-    /// The first iteration is the linearly implicit step above to first order in h v. δ is a descent direction of Φ;
-    /// the step s = 1, ½, ¼, … is the first that does not raise Φ (backtracking, evaluated without cancellation by
-    /// <see cref="FemForces.NeoHookeanEnergyChange"/>): a linearisation far from rest (a strongly compressed element,
-    /// whose volume term is cubic in the positions) would otherwise overshoot. Near equilibrium s = 1.
+    /// Stable Neo-Hookean: the same first step with K the energy Hessian projected to positive semi-definite per element
+    /// (<see cref="NeoHookeanTangent"/>, Smith, de Goes &amp; Kim 2018, §4); it is Newton's first iteration on the
+    /// backward-Euler equations from the guess x⁺ = x. Further iterations (<see cref="FemParameters.NewtonIterations"/>)
+    /// linearise at x_k = x + h v_k: <c>(M + h C_k + h² K_k) δ = h (f(x_k) − β K_k v_k) − M (v_k − v)</c>. The equations
+    /// are the stationarity of the incremental potential Φ(v⁺) = ½‖v⁺ − v‖²_M + E(x + h v⁺) + h/2 v⁺ᵀ C v⁺ (C held), and
+    /// each update v_{k+1} = v_k + s δ (v₀ = v, δ₀ = Δv) takes the first s = 1, ½, ¼, … that does not raise Φ
+    /// (backtracking; ΔΦ evaluated without cancellation by <see cref="FemForces.NeoHookeanEnergyChange"/>). For k ≥ 1, δ is
+    /// a descent direction of Φ (its matrix is Φ's projected Hessian); for k = 0 it is one to first order in h v. A
+    /// linearisation far from rest (a strongly compressed stiff element, whose volume term is cubic in the positions)
+    /// would otherwise overshoot; near equilibrium s = 1 and the step is Baraff &amp; Witkin's.
     /// </para>
     /// </summary>
     public static class FemImplicitEuler
@@ -182,9 +183,9 @@ namespace SoftBodyDynamics.Solvers
                     elastic += de;
                     magnitude += math.abs(de);
                 }
-                double kinetic = step * linear + step * step * quadratic;
+                double inertiaAndDamping = step * linear + step * step * quadratic;
                 magnitude += math.abs(step * linear) + math.abs(step * step * quadratic);
-                if (kinetic + elastic <= k_LineSearchSlack * magnitude)
+                if (inertiaAndDamping + elastic <= k_LineSearchSlack * magnitude)
                     break;
                 step *= 0.5f;
             }
