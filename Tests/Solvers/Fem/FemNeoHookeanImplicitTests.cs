@@ -479,7 +479,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         static (uint, uint, uint) Bits(float3 v) => (math.asuint(v.x), math.asuint(v.y), math.asuint(v.z));
 
         /// <summary>
-        /// The tangent pass (forces, rotations, tangents) and the stiffness product, run in batches of 1, 7 and 33 elements
+        /// The tangent pass (forces, rotations, tangents), the stiffness product and the line search's energy pass, run in batches of 1, 7 and 33 elements
         /// and nodes in reverse order, give the bits of one whole-range run (the pattern of
         /// FemBakeAndDeterminismTests.ElementForces_SameBits_ForAnyBatchSplitAndOrder).
         /// </summary>
@@ -495,7 +495,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 x[i] = data.RestPositions[i] + 0.03f * new float3((float)random.NextDouble() - 0.5f, (float)random.NextDouble() - 0.5f, (float)random.NextDouble() - 0.5f);
                 u[i] = new float3((float)random.NextDouble() - 0.5f, (float)random.NextDouble() - 0.5f, (float)random.NextDouble() - 0.5f);
             }
-            (float3[] f, float3[] ku, float3[] tangents) Run(int batch, bool reverse)
+            (float3[] f, float3[] ku, float3[] tangents, float3[] energies) Run(int batch, bool reverse)
             {
                 FemModel model = data.AsModel();
                 var rotations = new quaternion[model.ElementCount];
@@ -525,7 +525,16 @@ namespace SoftBodyDynamics.Tests.Solvers
                     int k = reverse ? nodeBatches - 1 - b : b;
                     FemForces.Gather(model, slots, ku, k * batch, math.min(model.ParticleCount, (k + 1) * batch));
                 }
-                return (f, ku, tangents);
+                // The line search's per-element energy changes (slot 4e).
+                for (int b = 0; b < elementBatches; b++)
+                {
+                    int k = reverse ? elementBatches - 1 - b : b;
+                    FemForces.NeoHookeanEnergyChange(model, x, u, u, 0.01f, 0.5f, slots, k * batch, math.min(model.ElementCount, (k + 1) * batch));
+                }
+                var energies = new float3[model.ElementCount];
+                for (int e = 0; e < energies.Length; e++)
+                    energies[e] = slots[4 * e];
+                return (f, ku, tangents, energies);
             }
             var whole = Run(100000, false);
             foreach (int batch in new[] { 1, 7, 33 })
@@ -538,6 +547,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 }
                 for (int i = 0; i < whole.tangents.Length; i++)
                     Assert.That(Bits(split.tangents[i]), Is.EqualTo(Bits(whole.tangents[i])), $"tangent float3 {i}, batch {batch}");
+                for (int e = 0; e < whole.energies.Length; e++)
+                    Assert.That(Bits(split.energies[e]), Is.EqualTo(Bits(whole.energies[e])), $"energy change, element {e}, batch {batch}");
             }
         }
 
