@@ -157,7 +157,7 @@ namespace SoftBodyDynamics.Authoring
         public FemMaterialModel femModel = FemParameters.Default.Model;
 
         [Tooltip("How the elements advance in time. Symplectic Euler: explicit, stable only below the stable step (the "
-                 + "inspector warns). Implicit Euler: co-rotational only, stable at any step. XPBD: Neo-Hookean only, stable at "
+                 + "inspector warns). Implicit Euler: both models, stable at any step. XPBD: Neo-Hookean only, stable at "
                  + "any step. An unsupported pair falls back to Symplectic Euler. Default from the solver.")]
         public FemIntegrator femIntegrator = FemParameters.Default.Integrator;
 

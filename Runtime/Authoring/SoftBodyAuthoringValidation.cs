@@ -120,13 +120,12 @@ namespace SoftBodyDynamics.Authoring
                 $"'{authoring.name}' is too stiff for its substep: at a fixed step of {AssumedFixedTimeStep * 1000f:0.##} ms and {substeps} substeps, ")
                 + Invariant($"each substep is {h * 1000.0:0.###} ms, but the explicit integrator is stable only below {maxStableStep * 1000.0:0.####} ms ")
                 + Invariant($"for this material and resolution. Use at least {needed} substeps, a softer material, a lower Resolution, or the ")
-                + "Implicit Euler (co-rotational) or XPBD (Neo-Hookean) integrator."));
+                + "Implicit Euler or XPBD (Neo-Hookean) integrator."));
         }
 
         /// <summary>True when <paramref name="integrator"/> runs explicitly for <paramref name="model"/> (symplectic Euler, or an unsupported pair that falls back to it).</summary>
         public static bool FemRunsExplicit(FemMaterialModel model, FemIntegrator integrator) =>
             integrator == FemIntegrator.SymplecticEuler
-            || (integrator == FemIntegrator.ImplicitEuler && model != FemMaterialModel.CoRotational)
             || (integrator == FemIntegrator.Xpbd && model != FemMaterialModel.NeoHookean);
 
         /// <summary>The uncached mass-spring or FEM build: reads the mesh at <paramref name="scale"/> and runs <see cref="TetrahedralBodyBuilder.Build"/>.</summary>

@@ -74,6 +74,18 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
+        /// Ψ(F + D) − Ψ(F) of the stable Neo-Hookean energy (J/m³) without forming either value (their common offset
+        /// would cancel in float32): μ/2 D : (2F + D) + λ/2 ΔJ (2(J − α) + ΔJ), with the exact expansion of the 3×3
+        /// determinant ΔJ = det(F + D) − det F = cof(F) : D + F : cof(D) + det D.
+        /// </summary>
+        public static float NeoHookeanEnergyChange(in float3x3 f, in float3x3 d, float mu, float lambdaSnh)
+        {
+            float alpha = 1f + mu / lambdaSnh;
+            float dj = DoubleDot(Cofactor(f), d) + DoubleDot(f, Cofactor(d)) + math.determinant(d);
+            return 0.5f * mu * DoubleDot(d, 2f * f + d) + 0.5f * lambdaSnh * dj * (2f * (math.determinant(f) - alpha) + dj);
+        }
+
+        /// <summary>
         /// Stable Neo-Hookean stress P = ∂Ψ/∂F = μ F + λ (J − α) cof(F) (Pa). Finite for every F: an inverted or flat
         /// element (J ≤ 0) is pushed back toward J = α by the cofactor term. Zero at F = I since λ(1 − α) = −μ.
         /// </summary>

@@ -4,32 +4,78 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// One linearly implicit backward-Euler substep of the co-rotational model (Baraff &amp; Witkin 1998, eq. 6, with the
-    /// warped stiffness of Müller &amp; Gross 2004): with f the elastic forces at x, K_R = R K₀ Rᵀ per element and the
-    /// Rayleigh damping C = β K_R,
-    /// <code>
-    ///   (M + h C + h² K_R) Δv = h (f − (β + h) K_R v),   v ← v + Δv
-    /// </code>
-    /// solved matrix-free by conjugate gradients with a Jacobi preconditioner (mᵢ + (hβ + h²) kᵢ, kᵢ the rotation-invariant
-    /// diagonal of <see cref="FemModel.StiffnessDiagonal"/>), pinned nodes filtered out of every vector. The matrix is
-    /// symmetric positive definite for any h, so the substep is stable at any step length. The velocities on entry
-    /// already hold the substep's gravity (the shared step adds it first), which is the same system with f + Mg.
+    /// One backward-Euler substep of a finite-element body: M(v⁺ − v) = h (f(x + h v⁺) − C v⁺), x⁺ = x + h v⁺, with the
+    /// Rayleigh damping C = β K. Each linear system is solved matrix-free by conjugate gradients (K·p per element into
+    /// its slots, gathered per node through <see cref="ElementIncidence"/>) with a Jacobi preconditioner
+    /// (mᵢ + (hβ + h²) kᵢ, kᵢ the rotation-invariant rest diagonal of <see cref="FemModel.StiffnessDiagonal"/>), pinned
+    /// nodes filtered out of every vector. Its matrix M + (hβ + h²) K is symmetric positive definite for any h, so the
+    /// substep is stable at any step length. The velocities on entry already hold the substep's gravity (the shared step
+    /// adds it first), which is the same system with f + Mg.
+    /// <para>
+    /// Co-rotational: one linearly implicit step (Baraff &amp; Witkin 1998, eq. 6) on the warped stiffness
+    /// K_R = R K₀ Rᵀ (Müller &amp; Gross 2004), forces and K_R at x:
+    /// <c>(M + h C + h² K_R) Δv = h (f − (β + h) K_R v)</c>.
+    /// </para>
+    /// <para>
+    /// Stable Neo-Hookean: the same first step with K the energy Hessian projected to positive semi-definite per element
+    /// (<see cref="NeoHookeanTangent"/>, Smith, de Goes &amp; Kim 2018, §4); it is Newton's first iteration on the
+    /// backward-Euler equations from the guess x⁺ = x. Further iterations (<see cref="FemParameters.NewtonIterations"/>)
+    /// linearise at x_k = x + h v_k: <c>(M + h C_k + h² K_k) δ = h (f(x_k) − β K_k v_k) − M (v_k − v)</c>. The equations
+    /// are the stationarity of the incremental potential Φ(v⁺) = ½‖v⁺ − v‖²_M + E(x + h v⁺) + h/2 v⁺ᵀ C v⁺ (C held), and
+    /// each update v_{k+1} = v_k + s δ (v₀ = v, δ₀ = Δv) takes the first s = 1, ½, ¼, … that does not raise Φ
+    /// (backtracking; ΔΦ evaluated without cancellation by <see cref="FemForces.NeoHookeanEnergyChange"/>). For k ≥ 1, δ is
+    /// a descent direction of Φ (its matrix is Φ's projected Hessian); for k = 0 it is one to first order in h v. A
+    /// linearisation far from rest (a strongly compressed stiff element, whose volume term is cubic in the positions)
+    /// would otherwise overshoot; near equilibrium s = 1 and the step is Baraff &amp; Witkin's.
+    /// </para>
     /// </summary>
     public static class FemImplicitEuler
     {
-        /// <summary>Solves one substep and adds Δv to <paramref name="v"/>. Returns the CG iterations taken.</summary>
+        /// <summary>Most Newton iterations per substep of the Neo-Hookean model.</summary>
+        public const int MaxNewtonIterations = 16;
+
+        /// <summary>Most halvings of the Newton step in the line search (the smallest step is 2⁻¹² of it).</summary>
+        public const int MaxLineSearchHalvings = 12;
+
+        /// <summary>
+        /// A step is accepted when ΔΦ ≤ this × the sum of the magnitudes of ΔΦ's terms: float32 round-off of the per-element
+        /// energy changes (~1e-6 of each) must not reject a step that is exact to first order.
+        /// </summary>
+        const double k_LineSearchSlack = 1e-5;
+
+        /// <summary>One co-rotational substep (see the class comment); adds Δv to <paramref name="v"/>. Returns the CG iterations taken.</summary>
         /// <param name="forces">Scratch, one per node.</param>
         /// <param name="work">Scratch, <see cref="FemState.WorkVectors"/> per node.</param>
         /// <param name="converged">True when ‖r‖ ≤ <paramref name="tolerance"/> ‖b‖ was reached.</param>
         /// <param name="inverted">Elements with det F ≤ 0 at x.</param>
         public static int Solve(in FemModel model, ReadOnlySpan<float3> x, Span<float3> v, Span<quaternion> rotations,
             int rotationIterations, Span<float3> slots, Span<float3> forces, Span<float3> work, float h, float beta,
-            int maxIterations, float tolerance, out bool converged, out int inverted)
+            int maxIterations, float tolerance, out bool converged, out int inverted) =>
+            Solve(model, FemMaterialModel.CoRotational, x, v, rotations, default, rotationIterations, slots, forces, work, h, beta, 1,
+                maxIterations, tolerance, out converged, out inverted);
+
+        /// <summary>One substep of <paramref name="materialModel"/> (see the class comment); updates <paramref name="v"/>. Returns the CG iterations taken, summed over the Newton iterations.</summary>
+        /// <param name="rotations">Per element: the rotation R, the warm start of its extraction (updated).</param>
+        /// <param name="tangents">Neo-Hookean: scratch, <see cref="NeoHookeanTangent.Float3Count"/> per element (unused by the co-rotational model).</param>
+        /// <param name="scratch">Scratch, one per node.</param>
+        /// <param name="work">Scratch, <see cref="FemState.WorkVectors"/> per node.</param>
+        /// <param name="newtonIterations">Neo-Hookean: Newton iterations (clamped to 1 … <see cref="MaxNewtonIterations"/>). The co-rotational model takes one linear step.</param>
+        /// <param name="converged">True when every CG solve reached ‖r‖ ≤ <paramref name="tolerance"/> ‖b‖.</param>
+        /// <param name="inverted">Elements with det F ≤ 0 at x.</param>
+        public static int Solve(in FemModel model, FemMaterialModel materialModel, ReadOnlySpan<float3> x, Span<float3> v,
+            Span<quaternion> rotations, Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch,
+            Span<float3> work, float h, float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged,
+            out int inverted)
         {
+            if (materialModel == FemMaterialModel.NeoHookean)
+                return SolveNeoHookean(model, x, v, rotations, tangents, rotationIterations, slots, scratch, work, h, beta,
+                    math.clamp(newtonIterations, 1, MaxNewtonIterations), maxIterations, tolerance, out converged, out inverted);
+
             int n = x.Length, elements = model.ElementCount;
             Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
                 q = work.Slice(4 * n, n);
-            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses, k = model.StiffnessDiagonal;
+            Span<float3> forces = scratch.Slice(0, n);
+            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
 
             // f at x (rotations re-extracted), then −K_R v.
             inverted = FemForces.Elastic(model, FemMaterialModel.CoRotational, x, default, 0f, rotations, rotationIterations, slots, 0, elements);
@@ -44,6 +90,130 @@ namespace SoftBodyDynamics.Solvers
                 dv[i] = float3.zero;
                 bb += math.lengthsq(r[i]);
             }
+            int iterations = ConjugateGradient(model, false, rotations, default, slots, dv, r, z, p, q, c, bb, maxIterations, tolerance,
+                out converged);
+            RemoveMomentumError(dv, m, w);
+            for (int i = 0; i < n; i++)
+                v[i] += dv[i];
+            return iterations;
+        }
+
+        /// <summary>The Newton iterations of the Neo-Hookean model (see the class comment).</summary>
+        static int SolveNeoHookean(in FemModel model, ReadOnlySpan<float3> x, Span<float3> v, Span<quaternion> rotations,
+            Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch, Span<float3> work, float h,
+            float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged, out int inverted)
+        {
+            int n = x.Length, elements = model.ElementCount;
+            Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
+                q = work.Slice(4 * n, n);
+            // v_k − v: the velocity change of the earlier iterations.
+            Span<float3> accumulated = scratch.Slice(0, n);
+            accumulated.Clear();
+            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
+            float c = h * beta + h * h;
+            converged = true;
+            inverted = 0;
+            int iterations = 0;
+            for (int k = 0; k < newtonIterations; k++)
+            {
+                // f and the tangents at the linearisation point (x, then x_k = x + h v_k) into r, then −K_k v_k into q.
+                int invertedAtX = FemForces.NeoHookeanTangents(model, x, k == 0 ? default : v, h, rotations, rotationIterations, tangents,
+                    slots, 0, elements);
+                if (k == 0)
+                    inverted = invertedAtX;
+                FemForces.Gather(model, slots, r, 0, n);
+                Stiffness(model, true, rotations, tangents, v, slots, q);
+                // k = 0: h (f − (β + h) K v) (x⁺ = x + h(v + Δv) linearised at x); k ≥ 1: h (f − β K v_k) − M (v_k − v).
+                float damping = k == 0 ? beta + h : beta;
+                float bb = 0f;
+                for (int i = 0; i < n; i++)
+                {
+                    r[i] = w[i] > 0f ? h * (r[i] + damping * q[i]) - m[i] * accumulated[i] : float3.zero;
+                    dv[i] = float3.zero;
+                    bb += math.lengthsq(r[i]);
+                }
+                if (!(bb > 0f))
+                    break; // at the solution (or a non-finite state the guard will catch)
+                iterations += ConjugateGradient(model, true, rotations, tangents, slots, dv, r, z, p, q, c, bb, maxIterations, tolerance,
+                    out bool solved);
+                converged &= solved;
+                RemoveMomentumError(dv, m, w);
+                float step = LineSearch(model, x, v, dv, accumulated, rotations, tangents, slots, q, h, beta);
+                for (int i = 0; i < n; i++)
+                {
+                    float3 change = step * dv[i];
+                    v[i] += change;
+                    accumulated[i] += change;
+                }
+            }
+            return iterations;
+        }
+
+        /// <summary>
+        /// The first s = 1, ½, ¼, … (at most <see cref="MaxLineSearchHalvings"/> halvings) with Φ(v_k + s δ) ≤ Φ(v_k):
+        /// ΔΦ(s) = s δᵀM(v_k − v) + s²/2 δᵀMδ + h β (s v_kᵀKδ + s²/2 δᵀKδ) + Σ_e V ΔΨ_e(s), the quadratic terms from one
+        /// product K δ (into <paramref name="q"/>), the elastic one per element. Sums in double, in node and element order.
+        /// </summary>
+        static float LineSearch(in FemModel model, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, ReadOnlySpan<float3> dv,
+            ReadOnlySpan<float3> accumulated, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents, Span<float3> slots,
+            Span<float3> q, float h, float beta)
+        {
+            int n = model.ParticleCount, elements = model.ElementCount;
+            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
+            Stiffness(model, true, rotations, tangents, dv, slots, q);
+            double dMd = 0.0, dMa = 0.0, dKd = 0.0, vKd = 0.0;
+            for (int i = 0; i < n; i++)
+            {
+                if (!(w[i] > 0f))
+                    continue;
+                dMd += m[i] * math.lengthsq(dv[i]);
+                dMa += m[i] * math.dot(dv[i], accumulated[i]);
+                dKd -= math.dot(dv[i], q[i]);
+                vKd -= math.dot(v[i], q[i]);
+            }
+            double linear = dMa + h * beta * vKd, quadratic = 0.5 * (dMd + h * beta * dKd);
+            float step = 1f;
+            for (int halving = 0; halving < MaxLineSearchHalvings; halving++)
+            {
+                FemForces.NeoHookeanEnergyChange(model, x, v, dv, h, step, slots, 0, elements);
+                double elastic = 0.0, magnitude = 0.0;
+                for (int e = 0; e < elements; e++)
+                {
+                    double de = slots[4 * e].x;
+                    elastic += de;
+                    magnitude += math.abs(de);
+                }
+                double inertiaAndDamping = step * linear + step * step * quadratic;
+                magnitude += math.abs(step * linear) + math.abs(step * step * quadratic);
+                if (inertiaAndDamping + elastic <= k_LineSearchSlack * magnitude)
+                    break;
+                step *= 0.5f;
+            }
+            return step;
+        }
+
+        /// <summary>q = −K u gathered per node (K of the model: warped, or the stored Neo-Hookean tangents).</summary>
+        static void Stiffness(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
+            ReadOnlySpan<float3> u, Span<float3> slots, Span<float3> q)
+        {
+            if (neoHookean)
+                FemForces.NeoHookeanStiffness(model, rotations, tangents, u, slots, 0, model.ElementCount);
+            else
+                FemForces.WarpedStiffness(model, rotations, u, slots, 0, model.ElementCount);
+            FemForces.Gather(model, slots, q, 0, model.ParticleCount);
+        }
+
+        /// <summary>
+        /// Preconditioned conjugate gradients on (M + c K) dv = r from dv = 0, r the right-hand side with ‖r‖² =
+        /// <paramref name="bb"/>; stops at ‖r‖ ≤ tolerance ‖b‖ (<paramref name="converged"/>), after
+        /// <paramref name="maxIterations"/>, or when pᵀAp ≤ 0. Returns the iterations taken.
+        /// </summary>
+        static int ConjugateGradient(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
+            Span<float3> slots, Span<float3> dv, Span<float3> r, Span<float3> z, Span<float3> p, Span<float3> q, float c, float bb,
+            int maxIterations, float tolerance, out bool converged)
+        {
+            int n = model.ParticleCount;
+            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses, k = model.StiffnessDiagonal;
             converged = true;
             int iterations = 0;
             if (bb > 0f && math.isfinite(bb))
@@ -55,9 +225,8 @@ namespace SoftBodyDynamics.Solvers
                 while (iterations < maxIterations)
                 {
                     iterations++;
-                    // q = A p = M p + c K_R p (the gathered slots hold −K_R p).
-                    FemForces.WarpedStiffness(model, rotations, p, slots, 0, elements);
-                    FemForces.Gather(model, slots, q, 0, n);
+                    // q = A p = M p + c K p (the gathered slots hold −K p).
+                    Stiffness(model, neoHookean, rotations, tangents, p, slots, q);
                     float pq = 0f;
                     for (int i = 0; i < n; i++)
                     {
@@ -86,9 +255,6 @@ namespace SoftBodyDynamics.Solvers
                         p[i] = z[i] + b * p[i];
                 }
             }
-            RemoveMomentumError(dv, m, w);
-            for (int i = 0; i < n; i++)
-                v[i] += dv[i];
             return iterations;
         }
 

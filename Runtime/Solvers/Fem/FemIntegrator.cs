@@ -9,9 +9,10 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         SymplecticEuler = 0,
         /// <summary>
-        /// Linearly implicit backward Euler on the warped stiffness (Müller &amp; Gross 2004, Baraff &amp; Witkin 1998), solved
-        /// by conjugate gradients. Unconditionally stable; damps high frequencies at large steps. Co-rotational only
-        /// (Neo-Hookean falls back to <see cref="SymplecticEuler"/> and the step reports it).
+        /// Linearly implicit backward Euler (Baraff &amp; Witkin 1998) solved by conjugate gradients: on the warped stiffness
+        /// (co-rotational, Müller &amp; Gross 2004) or on the Neo-Hookean Hessian projected to positive semi-definite (Smith,
+        /// de Goes &amp; Kim 2018), with <see cref="FemParameters.NewtonIterations"/> Newton iterations. Unconditionally
+        /// stable; damps high frequencies at large steps. Both models.
         /// </summary>
         ImplicitEuler = 1,
         /// <summary>

@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Constitutive model: co-rotational linear or stable Neo-Hookean.</summary>
         public FemMaterialModel Model;
-        /// <summary>Time integrator. Unsupported pairs (Neo-Hookean + implicit, co-rotational + XPBD) fall back to symplectic Euler and are reported.</summary>
+        /// <summary>Time integrator. The unsupported pair (co-rotational + XPBD) falls back to symplectic Euler and is reported.</summary>
         public FemIntegrator Integrator;
         /// <summary>Substeps per step (1–256). Symplectic Euler needs h = dt/substeps below <see cref="FemStability.MaxStableStep(in FemModel, FemMaterialModel)"/>.</summary>
         public int Substeps;
@@ -15,6 +15,11 @@ namespace SoftBodyDynamics.Solvers
         public int Iterations;
         /// <summary>Most conjugate-gradient iterations per implicit substep (1–10000).</summary>
         public int CgIterations;
+        /// <summary>
+        /// Newton iterations per implicit substep of the Neo-Hookean model (1–16). 1 = one linearly implicit solve (like the
+        /// co-rotational model); more iterations converge toward the nonlinear backward-Euler step, at one CG solve each.
+        /// </summary>
+        public int NewtonIterations;
         /// <summary>Relative residual ‖r‖/‖b‖ at which conjugate gradients stop (dimensionless, &gt; 0). Default 1e-3.</summary>
         public float CgTolerance;
         /// <summary>
@@ -60,6 +65,7 @@ namespace SoftBodyDynamics.Solvers
             p.Substeps = math.clamp(Substeps, 1, MaxSubsteps);
             p.Iterations = math.clamp(Iterations, 1, MaxIterations);
             p.CgIterations = math.clamp(CgIterations, 1, MaxCgIterations);
+            p.NewtonIterations = math.clamp(NewtonIterations, 1, FemImplicitEuler.MaxNewtonIterations);
             p.CgTolerance = CgTolerance > 0f && math.isfinite(CgTolerance) ? CgTolerance : d.CgTolerance;
             p.DampingFrequency = DampingFrequency > 0f && math.isfinite(DampingFrequency) ? DampingFrequency : 0f;
             p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
@@ -74,7 +80,7 @@ namespace SoftBodyDynamics.Solvers
             return p;
         }
 
-        /// <summary>Co-rotational, implicit Euler, 2 substeps, CG 64 iterations at 1e-3, damping at the model's ω_ref, Earth gravity.</summary>
+        /// <summary>Co-rotational, implicit Euler, 2 substeps, CG 64 iterations at 1e-3, 1 Newton iteration, damping at the model's ω_ref, Earth gravity.</summary>
         public static FemParameters Default => new FemParameters
         {
             Model = FemMaterialModel.CoRotational,
@@ -82,6 +88,7 @@ namespace SoftBodyDynamics.Solvers
             Substeps = 2,
             Iterations = 1,
             CgIterations = 64,
+            NewtonIterations = 1,
             CgTolerance = 1e-3f,
             DampingFrequency = 0f,
             Acceleration = new float3(0f, -9.81f, 0f),

@@ -24,6 +24,7 @@ namespace SoftBodyDynamics.Solvers
         readonly float3* m_Work;
         readonly float3* m_Slots;
         readonly float3* m_Multipliers;
+        readonly float3* m_Tangents;
         readonly int m_ParticleCount, m_ElementCount, m_ColorCount;
         readonly float3 m_RestCenter;
         readonly float m_Mu, m_Lambda, m_DampingRatio, m_DefaultDampingFrequency;
@@ -41,7 +42,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The stage over pinned arrays; see <see cref="FemSolver.Step"/> for how they are obtained.</summary>
         public FemSolveStage(float3* rest, float* masses, float* inverseMasses, TetElement* elements, int* incidenceOffsets,
             int* incidenceSlots, int* colorOffsets, int* colorElements, float* stiffnessDiagonal, quaternion* rotations,
-            float3* work, float3* slots, float3* multipliers, in FemModel model, in FemParameters sanitizedParameters,
+            float3* work, float3* slots, float3* multipliers, float3* tangents, in FemModel model, in FemParameters sanitizedParameters,
             FemIntegrator integrator, float beta)
         {
             m_Rest = rest;
@@ -57,6 +58,7 @@ namespace SoftBodyDynamics.Solvers
             m_Work = work;
             m_Slots = slots;
             m_Multipliers = multipliers;
+            m_Tangents = tangents;
             m_ParticleCount = model.ParticleCount;
             m_ElementCount = model.ElementCount;
             m_ColorCount = model.ColorCount;
@@ -97,9 +99,14 @@ namespace SoftBodyDynamics.Solvers
             {
                 case FemIntegrator.ImplicitEuler:
                 {
-                    int iterations = FemImplicitEuler.Solve(model, x, v, Rotations, m_Parameters.RotationIterations, slots, body.Scratch,
-                        new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), h, m_Beta, m_Parameters.CgIterations,
-                        m_Parameters.CgTolerance, out bool converged, out InvertedElements);
+                    // Neo-Hookean only: the element tangents (the co-rotational model keeps its stiffness in the rotations).
+                    var tangents = m_Parameters.Model == FemMaterialModel.NeoHookean
+                        ? new Span<float3>(m_Tangents, NeoHookeanTangent.Float3Count * m_ElementCount)
+                        : default;
+                    int iterations = FemImplicitEuler.Solve(model, m_Parameters.Model, x, v, Rotations, tangents, m_Parameters.RotationIterations,
+                        slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), h, m_Beta,
+                        m_Parameters.NewtonIterations, m_Parameters.CgIterations, m_Parameters.CgTolerance, out bool converged,
+                        out InvertedElements);
                     MaxCgIterations = math.max(MaxCgIterations, iterations);
                     CgConverged &= converged;
                     break;

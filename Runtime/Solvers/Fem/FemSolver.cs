@@ -25,13 +25,12 @@ namespace SoftBodyDynamics.Solvers
         public static void Wake(ref SoftBodyStatus status) => ParticleBodyStep.Wake(ref status);
 
         /// <summary>
-        /// The integrator that runs for <paramref name="p"/>: implicit Euler needs the co-rotational model and XPBD the
-        /// Neo-Hookean one; other pairs run symplectic Euler and set <paramref name="fallback"/>.
+        /// The integrator that runs for <paramref name="p"/>: XPBD needs the Neo-Hookean model; the co-rotational model with
+        /// XPBD runs symplectic Euler and sets <paramref name="fallback"/>. Symplectic and implicit Euler run with both models.
         /// </summary>
         public static FemIntegrator EffectiveIntegrator(in FemParameters p, out bool fallback)
         {
-            fallback = (p.Integrator == FemIntegrator.ImplicitEuler && p.Model != FemMaterialModel.CoRotational)
-                       || (p.Integrator == FemIntegrator.Xpbd && p.Model != FemMaterialModel.NeoHookean);
+            fallback = p.Integrator == FemIntegrator.Xpbd && p.Model != FemMaterialModel.NeoHookean;
             return fallback ? FemIntegrator.SymplecticEuler : p.Integrator;
         }
 
@@ -81,9 +80,10 @@ namespace SoftBodyDynamics.Solvers
             fixed (float3* work = state.Work)
             fixed (float3* slots = state.Slots)
             fixed (float3* multipliers = state.Multipliers)
+            fixed (float3* tangents = state.Tangents)
             {
                 var stage = new FemSolveStage(rest, masses, inverseMasses, elements, incidenceOffsets, incidenceSlots, colorOffsets,
-                    colorElements, stiffness, rotations, work, slots, multipliers, model, p, integrator, beta);
+                    colorElements, stiffness, rotations, work, slots, multipliers, tangents, model, p, integrator, beta);
                 report.Step = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
                 report.MaxCgIterations = stage.MaxCgIterations;
                 report.CgConverged = stage.CgConverged;

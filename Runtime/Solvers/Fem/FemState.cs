@@ -28,13 +28,18 @@ namespace SoftBodyDynamics.Solvers
         public readonly Span<float3> Slots;
         /// <summary>Scratch: per element XPBD multipliers (x = λ_D, y = λ_H) of the substep.</summary>
         public readonly Span<float3> Multipliers;
+        /// <summary>
+        /// Scratch of the Neo-Hookean implicit step: per element its projected Hessian, <see cref="NeoHookeanTangent.Float3Count"/>
+        /// float3s (element e at <see cref="NeoHookeanTangent.Float3Count"/> × e). May be empty for the other integrators.
+        /// </summary>
+        public readonly Span<float3> Tangents;
 
         /// <summary>Vectors of the conjugate-gradient solve.</summary>
         public const int WorkVectors = 5;
         /// <summary>Scratch float3s per particle: predicted positions, contact normals, forces, and <see cref="WorkVectors"/>.</summary>
         public const int ScratchPerParticle = 3 + WorkVectors;
-        /// <summary>Scratch float3s per element: 4 corner slots and the multipliers.</summary>
-        public const int ScratchPerElement = 5;
+        /// <summary>Scratch float3s per element: 4 corner slots, the multipliers and the Neo-Hookean tangent (<see cref="NeoHookeanTangent.Float3Count"/>).</summary>
+        public const int ScratchPerElement = 5 + NeoHookeanTangent.Float3Count;
 
         /// <summary>
         /// The state over its buffers, one particle scratch of <see cref="ScratchPerParticle"/> × particles and one element
@@ -46,11 +51,14 @@ namespace SoftBodyDynamics.Solvers
             int n = positions.Length, e = rotations.Length;
             return new FemState(positions, velocities, rotations, particleScratch.Slice(0, n), particleScratch.Slice(n, n),
                 particleScratch.Slice(2 * n, n), particleScratch.Slice(3 * n, WorkVectors * n),
-                elementScratch.Slice(0, 4 * e), elementScratch.Slice(4 * e, e));
+                elementScratch.Slice(0, 4 * e), elementScratch.Slice(4 * e, e),
+                elementScratch.Slice(5 * e, NeoHookeanTangent.Float3Count * e));
         }
 
+        /// <summary>The state over explicit spans (see the fields); <paramref name="tangents"/> may be left empty unless the Neo-Hookean implicit step runs.</summary>
         public FemState(Span<float3> positions, Span<float3> velocities, Span<quaternion> rotations, Span<float3> predicted,
-            Span<float3> contactNormals, Span<float3> forces, Span<float3> work, Span<float3> slots, Span<float3> multipliers)
+            Span<float3> contactNormals, Span<float3> forces, Span<float3> work, Span<float3> slots, Span<float3> multipliers,
+            Span<float3> tangents = default)
         {
             Positions = positions;
             Velocities = velocities;
@@ -61,6 +69,7 @@ namespace SoftBodyDynamics.Solvers
             Work = work;
             Slots = slots;
             Multipliers = multipliers;
+            Tangents = tangents;
         }
     }
 }

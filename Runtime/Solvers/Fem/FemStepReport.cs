@@ -9,7 +9,7 @@ namespace SoftBodyDynamics.Solvers
         public FemIntegrator Integrator;
         /// <summary>The parameters asked for an unsupported model/integrator pair; <see cref="Integrator"/> ran instead.</summary>
         public bool IntegratorFallback;
-        /// <summary>Most conjugate-gradient iterations any implicit substep took.</summary>
+        /// <summary>Most conjugate-gradient iterations any implicit substep took (summed over its Newton iterations).</summary>
         public int MaxCgIterations;
         /// <summary>Every implicit substep reached the CG tolerance (true when none ran).</summary>
         public bool CgConverged;

@@ -58,6 +58,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodVariant("FEM co-rotational implicit", "substeps", new[] { 1 }, new[] { 1 },
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_Resolutions),
+            new MethodVariant("FEM Neo-Hookean implicit", "substeps", new[] { 1 }, new[] { 1 }, (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations, ConvergedCgTolerance), s_Resolutions),
             new MethodVariant("FEM Neo-Hookean explicit", "substeps", s_ExplicitFemKnobs, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.SymplecticEuler, k)),
             new MethodVariant("FEM Neo-Hookean XPBD", "substeps", new[] { 64 }, new int[0],
