@@ -118,8 +118,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// of the two bars' clamp end effects with the load (finite rotations of the tapering clamp region): the reference's grows
         /// by 0.5 % from the small to the large load (<see cref="HangingBarReference_MatchesTheUniformSectionCurveWithinTheEndEffect"/>),
         /// and one cell across spreads the clamp's restraint over a whole cell instead of the continuum's ~h/4.2, about 4× as far,
-        /// so ~4 × 0.5 % = 2 % for the tetrahedra: the ratio is asserted within 4 % of the law's (measured −2.4 % at 1 cell across;
-        /// −0.75 % and −0.3 % at 2 and 3 across in the study's run), six times tighter than the gap to a Neo-Hookean curve (+24 %).
+        /// so ~4 × 0.5 % = 2 % for the tetrahedra: the ratio is asserted within 4 % of the law's (measured −2.4 % against the
+        /// 2-element reference; in the study's run, against the extrapolated one, −2.6, −0.9, −0.5, −0.3 % at 1, 2, 3, 4 cells across),
+        /// six times tighter than the gap to a Neo-Hookean curve (+24 %).
         /// Metrics are finite, no resets.
         /// </summary>
         [Test]
