@@ -230,8 +230,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </code>
         /// (an estimate: the section-averaged stretch at the clamp is taken as the confined one, the corners' singular
         /// strains are averaged out, and the oscillating part of the decay, which only shortens it, is dropped). The
-        /// clamped bar is the stiffer one: in linear elasticity its compliance is at most the uniform bar's by the
-        /// principle of minimum complementary energy (the uniform bar's stress field is admissible for it).
+        /// clamped bar is the stiffer one: in linear elasticity its compliance ∫ ρ g u_x dV is at most ∫ σ²/E dV =
+        /// ρ²g²AL³/(3E) of the uniform bar's stress σ = ρ g (L − X), which is statically admissible for the clamped bar
+        /// (principle of minimum complementary energy).
         /// </summary>
         public static double EndEffectBound(double length, double side, double youngModulus, double poissonRatio, double density, double gravity)
         {

@@ -32,7 +32,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public const string Source =
             "Reference: the float64 FEM of the same clamped bar (Q2 hexahedra, compressible Neo-Hookean, Newton statics with the body " +
             "force, each load continued from the previous one) at 1, 2 and 3 elements across, Richardson-extrapolated per load; " +
-            "checked against the uniform-section Neo-Hookean curve δ = ∫₀ᴸ (λ(ρg(L − X)) − 1) dX (exact for a bar whose clamp lets its section contract).";
+            "checked against the uniform-section Neo-Hookean curve δ = ∫₀ᴸ (λ(ρg(L − X)) − 1) dX (the slender-bar answer: every section in uniaxial tension with free sides, the clamp's included).";
 
         static readonly Dictionary<(float, float, float), StretchTargets> s_Cache = new Dictionary<(float, float, float), StretchTargets>();
 
