@@ -14,7 +14,7 @@ namespace SoftBodyDynamics.Tests.Solvers
 
         /// <summary>
         /// Bound on the discretisation error of the Q2 reference at 2 elements across, relative: Q2 approaches from below (too stiff)
-        /// and the study's run measured it 0.8–0.9 % below the Richardson value of 1, 2, 3 elements (observed order ≈ 1.5, limited
+        /// and the study's run measured it 0.75–0.9 % below the Richardson value of 1, 2, 3 elements (observed order ≈ 1.5, limited
         /// by the clamp's edge singularity).
         /// </summary>
         const double ReferenceDiscretisation = 0.015;
@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// Small load (2 g: strain at the clamp ε_max = ρgL/E = 0.86 %): the reference's extension is the linear bar's ρgL²/(2E)
         /// within the stated bounds: above it by at most the material nonlinearity (the Neo-Hookean bar softens in tension,
         /// δ/δ_lin − 1 ≈ (2/3) ε_max, bounded here by ε_max), below it by at most the clamp's end effect
-        /// (<see cref="HangingBarReference.EndEffectBound"/>, 4.4 %) plus the 2-element discretisation (1.5 %). Measured −2.4 %.
+        /// (<see cref="HangingBarReference.EndEffectBound"/>, 4.4 %) plus the 2-element discretisation (1.5 %). Measured −2.0 %.
         /// </summary>
         [Test]
         public void HangingBarReference_SmallLoadMatchesTheLinearBar()
