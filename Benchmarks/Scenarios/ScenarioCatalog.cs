@@ -15,6 +15,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodStudySuite(new CantileverScene()),
             new MethodStudySuite(new SquashScene()),
             new MethodStudyStabilitySuite(),
+            new MethodStudySuite(new StretchScene()),
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
         };
