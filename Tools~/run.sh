@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The main job: runs every benchmark scenario headless, prints the table (scenario, method, size,
 # ms per step, ns per item, items per second, error metrics) and writes a Markdown report with PNG figures.
-# Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT]
+# Usage: bash Tools~/run.sh [--out DIR] [--quick] [--repeats N] [--filter TEXT] [--method TEXT]
 # The full run includes the method study (suites MethodStudy*, tens of minutes); --quick runs a few points of each suite,
-# --filter TEXT only the suites whose name contains TEXT (e.g. --filter MethodStudyCantilever).
+# --filter TEXT only the suites whose name contains TEXT (e.g. --filter MethodStudyCantilever), --method TEXT only the
+# scenarios whose method contains TEXT (e.g. --method "Neo-Hookean implicit").
 # Default report folder: Reports~/latest (relative to the package root).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Runner
     /// Headless scenario runner: runs every suite of <see cref="ScenarioCatalog"/>, prints a table
     /// (scenario, method, size, ms per step, ns per item, items per second, error metrics) and writes a Markdown
     /// report with PNG figures.
-    /// Usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT]
+    /// Usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT] [--method TEXT]
     /// </summary>
     static class Program
     {
@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Runner
             var options = RunOptions.Parse(args);
             if (options == null)
             {
-                Console.Error.WriteLine("usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT]");
+                Console.Error.WriteLine("usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT] [--method TEXT]");
                 return 2;
             }
 
@@ -35,6 +35,13 @@ namespace SoftBodyDynamics.Runner
                 Console.WriteLine();
                 Console.WriteLine($"== {suite.Name}");
                 var scenarios = new List<IScenario>(suite.Scenarios(options.Quick));
+                // A suite left with no scenario by --method is skipped (a summary-only suite, which has none, still runs).
+                if (options.Method != null && scenarios.Count > 0)
+                {
+                    scenarios.RemoveAll(sc => sc.Method.IndexOf(options.Method, StringComparison.OrdinalIgnoreCase) < 0);
+                    if (scenarios.Count == 0)
+                        continue;
+                }
                 var table = new TablePrinter(Console.Out, scenarios);
                 table.PrintHeader();
                 foreach (IScenario scenario in scenarios)
@@ -67,6 +74,8 @@ namespace SoftBodyDynamics.Runner
         public bool Quick;
         public int Repeats = 15;
         public string Filter;
+        /// <summary>Only scenarios whose method text contains this (case-insensitive), e.g. "Neo-Hookean implicit"; null = all.</summary>
+        public string Method;
 
         public static RunOptions Parse(string[] args)
         {
@@ -80,6 +89,7 @@ namespace SoftBodyDynamics.Runner
                     case "--repeats" when i + 1 < args.Length && int.TryParse(args[i + 1], out int n) && n > 0:
                         o.Repeats = n; i++; break;
                     case "--filter" when i + 1 < args.Length: o.Filter = args[++i]; break;
+                    case "--method" when i + 1 < args.Length: o.Method = args[++i]; break;
                     default: return null;
                 }
             }
