@@ -13,6 +13,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new ShapeMatchingFrameRateSuite(),
             new ShapeMatchingConservationSuite(),
             new MethodStudySuite(new CantileverScene()),
+            new MethodStudySuite(new Csm3Scene()),
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
         };
