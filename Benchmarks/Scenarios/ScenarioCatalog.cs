@@ -13,9 +13,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new ShapeMatchingFrameRateSuite(),
             new ShapeMatchingConservationSuite(),
             new MethodStudySuite(new CantileverScene()),
+            new MethodStudySuite(new Csm3Scene()),
             new MethodStudySuite(new SquashScene()),
-            new MethodStudyStabilitySuite(),
             new MethodStudySuite(new StretchScene()),
+            new MethodStudyStabilitySuite(),
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
         };

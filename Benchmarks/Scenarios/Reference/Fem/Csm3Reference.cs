@@ -12,6 +12,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public double UxMean, UxAmplitude, UxFrequency;
         /// <summary>Elements along the length and across the height.</summary>
         public int ElementsX, ElementsY;
+        /// <summary>Elements across the width (<see cref="Csm3SolidReference"/>; 0 for the 2-D plane-strain run).</summary>
+        public int ElementsZ;
         /// <summary>Time step (s), duration (s), Newton iterations over the run, and whether every step converged.</summary>
         public double TimeStep, Duration;
         /// <summary>Newton iterations over the run.</summary>
