@@ -46,7 +46,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Metric: 1 when the free run oscillated enough to measure the frequency (two upward crossings), else 0 (then 'err' is the worst static error).</summary>
         public const string FrequencyMeasured = "f1 measured";
 
-        static readonly Dictionary<int, MethodBodySetup> s_Setups = new Dictionary<int, MethodBodySetup>();
 
         /// <summary>Soft rubber (E 1 MPa, ν 0.45, 1100 kg/m³, ζ 0.2).</summary>
         public static ElasticMaterial Material => ElasticMaterial.Rubber;
@@ -61,16 +60,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static int3 CellsAt(int across) => new int3(8 * across, across, across);
 
         /// <summary>The beam with <paramref name="resolution"/> cells across (0 = <see cref="DefaultCellsAcross"/>), built once.</summary>
-        public override MethodBodySetup SetupAt(int resolution)
-        {
-            int n = resolution > 0 ? resolution : DefaultCellsAcross;
-            lock (s_Setups)
-            {
-                if (!s_Setups.TryGetValue(n, out MethodBodySetup setup))
-                    s_Setups[n] = setup = CreateSetup(CellsAt(n));
-                return setup;
-            }
-        }
+        public override MethodBodySetup SetupAt(int resolution) =>
+            CachedSetup(resolution > 0 ? resolution : DefaultCellsAcross, n => CreateSetup(CellsAt(n)));
 
         public override float CellSizeAt(int resolution) => Thickness / (resolution > 0 ? resolution : DefaultCellsAcross);
 

@@ -44,7 +44,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Metric: the tip's frequency (Hz).</summary>
         public const string FrequencyValue = "f";
 
-        static readonly Dictionary<int, MethodBodySetup> s_Setups = new Dictionary<int, MethodBodySetup>();
 
         /// <summary>The benchmark's material, undamped (E 1.4 MPa, ν 0.4, 1000 kg/m³, ζ 0).</summary>
         public static ElasticMaterial Material => new ElasticMaterial((float)Csm3Reference.YoungModulus, (float)Csm3Reference.PoissonRatio,
@@ -63,16 +62,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new int3((int)Math.Round(Length / (double)Height * across, MidpointRounding.AwayFromZero), across, across);
 
         /// <summary>The beam with <paramref name="resolution"/> cells across (0 = <see cref="DefaultCellsAcross"/>), built once.</summary>
-        public override MethodBodySetup SetupAt(int resolution)
-        {
-            int n = resolution > 0 ? resolution : DefaultCellsAcross;
-            lock (s_Setups)
-            {
-                if (!s_Setups.TryGetValue(n, out MethodBodySetup setup))
-                    s_Setups[n] = setup = CreateSetup(CellsAt(n));
-                return setup;
-            }
-        }
+        public override MethodBodySetup SetupAt(int resolution) =>
+            CachedSetup(resolution > 0 ? resolution : DefaultCellsAcross, n => CreateSetup(CellsAt(n)));
 
         public override float CellSizeAt(int resolution) => Height / (resolution > 0 ? resolution : DefaultCellsAcross);
 

@@ -45,7 +45,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Metric: 1 if the body recovered within the window, else 0 (its recovery error is then a lower bound).</summary>
         public const string Recovered = "recovered";
 
-        static readonly Dictionary<int, MethodBodySetup> s_Setups = new Dictionary<int, MethodBodySetup>();
 
         /// <summary>Gelatin (E 10 kPa, ν 0.45, 1000 kg/m³, ζ 0.1).</summary>
         public static ElasticMaterial Material => ElasticMaterial.Jelly;
@@ -60,16 +59,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         protected override float3 TimedGravity => float3.zero;
 
         /// <summary>The cube with <paramref name="resolution"/> cells per edge (0 = <see cref="DefaultCells"/>), built once.</summary>
-        public override MethodBodySetup SetupAt(int resolution)
-        {
-            int n = resolution > 0 ? resolution : DefaultCells;
-            lock (s_Setups)
-            {
-                if (!s_Setups.TryGetValue(n, out MethodBodySetup setup))
-                    s_Setups[n] = setup = CreateSetup(n);
-                return setup;
-            }
-        }
+        public override MethodBodySetup SetupAt(int resolution) =>
+            CachedSetup(resolution > 0 ? resolution : DefaultCells, n => CreateSetup(n));
 
         public override float CellSizeAt(int resolution) => Size / (resolution > 0 ? resolution : DefaultCells);
 

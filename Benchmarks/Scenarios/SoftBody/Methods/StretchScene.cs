@@ -74,7 +74,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Metric: the extension at a level (m).</summary>
         public static string LevelExtension(int level) => $"δ {LevelNames[level]}";
 
-        static readonly Dictionary<int, MethodBodySetup> s_Setups = new Dictionary<int, MethodBodySetup>();
 
         /// <summary>Soft rubber (E 1 MPa, ν 0.45, 1100 kg/m³, ζ 0.2).</summary>
         public static ElasticMaterial Material => ElasticMaterial.Rubber;
@@ -89,16 +88,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static int3 CellsAt(int across) => new int3(across, 8 * across, across);
 
         /// <summary>The bar with <paramref name="resolution"/> cells across (0 = <see cref="DefaultCellsAcross"/>), built once.</summary>
-        public override MethodBodySetup SetupAt(int resolution)
-        {
-            int n = resolution > 0 ? resolution : DefaultCellsAcross;
-            lock (s_Setups)
-            {
-                if (!s_Setups.TryGetValue(n, out MethodBodySetup setup))
-                    s_Setups[n] = setup = CreateSetup(CellsAt(n));
-                return setup;
-            }
-        }
+        public override MethodBodySetup SetupAt(int resolution) =>
+            CachedSetup(resolution > 0 ? resolution : DefaultCellsAcross, n => CreateSetup(CellsAt(n)));
 
         public override float CellSizeAt(int resolution) => Thickness / (resolution > 0 ? resolution : DefaultCellsAcross);
 

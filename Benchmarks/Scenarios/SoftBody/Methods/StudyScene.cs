@@ -37,6 +37,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public virtual int MaxResolution => int.MaxValue;
 
+        static readonly Dictionary<(Type Scene, int CellsAcross), MethodBodySetup> s_Setups = new Dictionary<(Type, int), MethodBodySetup>();
+
+        /// <summary>The body of this scene at <paramref name="cellsAcross"/>, built by <paramref name="create"/> once per scene type and resolution.</summary>
+        protected MethodBodySetup CachedSetup(int cellsAcross, Func<int, MethodBodySetup> create)
+        {
+            lock (s_Setups)
+            {
+                var key = (GetType(), cellsAcross);
+                if (!s_Setups.TryGetValue(key, out MethodBodySetup setup))
+                    s_Setups[key] = setup = create(cellsAcross);
+                return setup;
+            }
+        }
+
         /// <summary>The body at a resolution (cells across its thinnest side); 0 = <see cref="Setup"/>.</summary>
         public virtual MethodBodySetup SetupAt(int resolution) => Setup;
         /// <summary>Cell edge (m) of <see cref="SetupAt"/>; 0 = <see cref="CellSize"/>.</summary>
