@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(bool quick)
         {
             foreach (MethodVariant v in MethodCatalog.Variants)
-            foreach (int resolution in v.Resolutions.Length > 0 && !quick ? v.Resolutions : new[] { 0 })
+            foreach (int resolution in v.Resolutions.Length > 0 && !quick ? v.Resolutions.Where(n => n <= m_Scene.MaxResolution) : new[] { 0 })
             foreach (int knob in quick ? v.QuickKnobs : v.Knobs)
                 yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }

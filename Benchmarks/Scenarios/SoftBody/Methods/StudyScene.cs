@@ -31,6 +31,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Metric: particles of the body measured (the cost per step is ns per particle-step times this).</summary>
         public const string Particles = "particles";
 
+        /// <summary>
+        /// Finest resolution (cells across) this scene runs of a variant's sweep: finer ones are left out (a scene whose body
+        /// is large at a given n, or whose reference is not resolved enough to judge finer meshes, caps it). Default: no cap.
+        /// </summary>
+        public virtual int MaxResolution => int.MaxValue;
+
         /// <summary>The body at a resolution (cells across its thinnest side); 0 = <see cref="Setup"/>.</summary>
         public virtual MethodBodySetup SetupAt(int resolution) => Setup;
         /// <summary>Cell edge (m) of <see cref="SetupAt"/>; 0 = <see cref="CellSize"/>.</summary>
