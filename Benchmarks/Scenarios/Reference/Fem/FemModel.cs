@@ -209,58 +209,79 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                         return double.NaN;
                     double w = m_Weight[q];
                     energy += w * psi;
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    {
-                        double s = 0;
-                        for (int jj = 0; jj < dim; jj++)
-                            s += p[3 * i + jj] * m_Grad[go + n * dim + jj];
-                        fe[n * dim + i] += w * s;
-                    }
-                    if (ke == null)
-                        continue;
-                    // h[n, i, k, L] = w Σ_J ∇N_n,J 𝔸_iJkL, then K_(n i)(m k) += Σ_L h[n, i, k, L] ∇N_m,L.
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    for (int k = 0; k < dim; k++)
-                    for (int l = 0; l < dim; l++)
-                    {
-                        double s = 0;
-                        for (int jj = 0; jj < dim; jj++)
-                            s += m_Grad[go + n * dim + jj] * a[9 * (3 * i + jj) + 3 * k + l];
-                        h[((n * 3 + i) * 3 + k) * 3 + l] = w * s;
-                    }
-                    // Upper block triangle m ≥ n only; 𝔸's major symmetry fills the rest below.
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    {
-                        int row = (n * dim + i) * ned;
-                        for (int m = n; m < nen; m++)
-                        {
-                            int gm = go + m * dim;
-                            for (int k = 0; k < dim; k++)
-                            {
-                                int ho = ((n * 3 + i) * 3 + k) * 3;
-                                double s = 0;
-                                for (int l = 0; l < dim; l++)
-                                    s += h[ho + l] * m_Grad[gm + l];
-                                ke[row + m * dim + k] += s;
-                            }
-                        }
-                    }
+                    AddStressForce(p, go, w, fe);
+                    if (ke != null)
+                        AddTangent(a, go, w, h, ke);
                 }
                 for (int k = 0; k < ned; k++)
                     force[dofs[k]] += fe[k];
-                if (ke == null)
-                    continue;
-                for (int n = 1; n < nen; n++)
-                for (int m = 0; m < n; m++)
-                for (int i = 0; i < dim; i++)
-                for (int k = 0; k < dim; k++)
-                    ke[(n * dim + i) * ned + m * dim + k] = ke[(m * dim + k) * ned + n * dim + i];
-                Scatter(tangent, e, ke);
+                if (ke != null)
+                    ScatterSymmetric(tangent, e, ke);
             }
             return energy;
+        }
+
+        /// <summary>fe_(n i) += w Σ_J P_iJ ∇N_n,J at the Gauss point whose gradients start at <paramref name="go"/> (one quadrature term of ∫ P ∇N dV).</summary>
+        void AddStressForce(ReadOnlySpan<double> p, int go, double w, double[] fe)
+        {
+            int dim = m_Dim;
+            for (int n = 0; n < m_Nen; n++)
+            for (int i = 0; i < dim; i++)
+            {
+                double s = 0;
+                for (int jj = 0; jj < dim; jj++)
+                    s += p[3 * i + jj] * m_Grad[go + n * dim + jj];
+                fe[n * dim + i] += w * s;
+            }
+        }
+
+        /// <summary>
+        /// One quadrature term of a tangent ∫ ∇N 𝔸 ∇N dV into the element matrix <paramref name="ke"/>, upper block triangle
+        /// m ≥ n only (<see cref="ScatterSymmetric"/> fills the rest by 𝔸's major symmetry): h[n, i, k, L] = w Σ_J ∇N_n,J 𝔸_iJkL,
+        /// then ke_(n i)(m k) += Σ_L h[n, i, k, L] ∇N_m,L. <paramref name="h"/> is scratch of 27 per element node.
+        /// </summary>
+        void AddTangent(ReadOnlySpan<double> a, int go, double w, double[] h, double[] ke)
+        {
+            int dim = m_Dim, nen = m_Nen, ned = m_Ned;
+            for (int n = 0; n < nen; n++)
+            for (int i = 0; i < dim; i++)
+            for (int k = 0; k < dim; k++)
+            for (int l = 0; l < dim; l++)
+            {
+                double s = 0;
+                for (int jj = 0; jj < dim; jj++)
+                    s += m_Grad[go + n * dim + jj] * a[9 * (3 * i + jj) + 3 * k + l];
+                h[((n * 3 + i) * 3 + k) * 3 + l] = w * s;
+            }
+            for (int n = 0; n < nen; n++)
+            for (int i = 0; i < dim; i++)
+            {
+                int row = (n * dim + i) * ned;
+                for (int m = n; m < nen; m++)
+                {
+                    int gm = go + m * dim;
+                    for (int k = 0; k < dim; k++)
+                    {
+                        int ho = ((n * 3 + i) * 3 + k) * 3;
+                        double s = 0;
+                        for (int l = 0; l < dim; l++)
+                            s += h[ho + l] * m_Grad[gm + l];
+                        ke[row + m * dim + k] += s;
+                    }
+                }
+            }
+        }
+
+        /// <summary>Mirrors the upper block triangle of the element matrix of element <paramref name="e"/> below the diagonal, then scatters it.</summary>
+        void ScatterSymmetric(FemCsrMatrix m, int e, double[] ke)
+        {
+            int dim = m_Dim, ned = m_Ned;
+            for (int n = 1; n < m_Nen; n++)
+            for (int b = 0; b < n; b++)
+            for (int i = 0; i < dim; i++)
+            for (int k = 0; k < dim; k++)
+                ke[(n * dim + i) * ned + b * dim + k] = ke[(b * dim + k) * ned + n * dim + i];
+            Scatter(m, e, ke);
         }
 
         void Scatter(FemCsrMatrix m, int e, double[] ke)

@@ -58,56 +58,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     }
                     FemViscosity.Evaluate(h, hDot, beta, Material.Mu, Material.Lambda, p, a, dim);
                     double w = m_Weight[q];
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    {
-                        double s = 0;
-                        for (int jj = 0; jj < dim; jj++)
-                            s += p[3 * i + jj] * m_Grad[go + n * dim + jj];
-                        fe[n * dim + i] += w * s;
-                    }
-                    if (ke == null)
-                        continue;
-                    // As for the stiffness: hh[n, i, k, L] = c w Σ_J ∇N_n,J ∂P_iJ/∂Ḟ_kL, then C_(n i)(m k) += Σ_L hh ∇N_m,L.
-                    double cw = velocityFactor * w;
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    for (int k = 0; k < dim; k++)
-                    for (int l = 0; l < dim; l++)
-                    {
-                        double s = 0;
-                        for (int jj = 0; jj < dim; jj++)
-                            s += m_Grad[go + n * dim + jj] * a[9 * (3 * i + jj) + 3 * k + l];
-                        hh[((n * 3 + i) * 3 + k) * 3 + l] = cw * s;
-                    }
-                    for (int n = 0; n < nen; n++)
-                    for (int i = 0; i < dim; i++)
-                    {
-                        int row = (n * dim + i) * ned;
-                        for (int m = n; m < nen; m++)
-                        {
-                            int gm = go + m * dim;
-                            for (int k = 0; k < dim; k++)
-                            {
-                                int ho = ((n * 3 + i) * 3 + k) * 3;
-                                double s = 0;
-                                for (int l = 0; l < dim; l++)
-                                    s += hh[ho + l] * m_Grad[gm + l];
-                                ke[row + m * dim + k] += s;
-                            }
-                        }
-                    }
+                    AddStressForce(p, go, w, fe);
+                    // As for the stiffness, with ∂P/∂Ḟ for 𝔸 and the weight c·w.
+                    if (ke != null)
+                        AddTangent(a, go, velocityFactor * w, hh, ke);
                 }
                 for (int k = 0; k < ned; k++)
                     force[dofs[k]] += fe[k];
-                if (ke == null)
-                    continue;
-                for (int n = 1; n < nen; n++)
-                for (int m = 0; m < n; m++)
-                for (int i = 0; i < dim; i++)
-                for (int k = 0; k < dim; k++)
-                    ke[(n * dim + i) * ned + m * dim + k] = ke[(m * dim + k) * ned + n * dim + i];
-                Scatter(tangent, e, ke);
+                if (ke != null)
+                    ScatterSymmetric(tangent, e, ke);
             }
         }
     }
