@@ -53,18 +53,12 @@ namespace SoftBodyDynamics.Solvers
                 return result;
 
             AxisAlignedBox bounds = AxisAlignedBox.Of(vertices);
-            float tolerance = MeshWelding.ResolveTolerance(bounds, settings.WeldTolerance, settings.WeldDistance);
-            if (!math.isfinite(tolerance))
-            {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, Invariant(
-                    $"WeldTolerance {settings.WeldTolerance} times the mesh diagonal {bounds.Diagonal} m is not a finite distance. Use a tolerance near the default {MeshWelding.DefaultRelativeTolerance}.")));
+            if (!MeshWelding.TryWeld(vertices, bounds, settings.WeldTolerance, settings.WeldDistance, issues, out WeldedVertices welded))
                 return result;
-            }
-            WeldedVertices welded = MeshWelding.Weld(vertices, tolerance);
             if (welded.ParticleCount == 1)
             {
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.ZeroSize, -1, Invariant(
-                    $"All {vertices.Length} vertices were welded into one point: the weld distance {tolerance} m is not small against the mesh diagonal {bounds.Diagonal} m. Lower WeldTolerance or WeldDistance.")));
+                    $"All {vertices.Length} vertices were welded into one point: the weld distance {welded.Tolerance} m is not small against the mesh diagonal {bounds.Diagonal} m. Lower WeldTolerance or WeldDistance.")));
                 return result;
             }
             int[] surface = MeshWelding.RemapTriangles(triangles, welded.VertexToParticle);

@@ -27,6 +27,32 @@ namespace SoftBodyDynamics.Solvers
             absolute > 0f ? absolute : relative * bounds.Diagonal;
 
         /// <summary>
+        /// Resolves the weld distance of a build's settings (<see cref="ResolveTolerance"/>) and welds <paramref name="vertices"/>;
+        /// false with a <see cref="SoftBodyIssueCode.WeldToleranceInvalid"/> error in <paramref name="issues"/> when the
+        /// distance is not finite (an absurd relative tolerance on a huge mesh). The builders of every method call this.
+        /// </summary>
+        /// <param name="vertices">Render-vertex positions (m), finite.</param>
+        /// <param name="bounds">Their bounds.</param>
+        /// <param name="relative">Weld tolerance relative to the bounds diagonal (dimensionless).</param>
+        /// <param name="absolute">Weld distance (m); &gt; 0 overrides <paramref name="relative"/>.</param>
+        /// <param name="issues">Receives the error.</param>
+        /// <param name="welded">The welded particles (default when false).</param>
+        public static bool TryWeld(ReadOnlySpan<float3> vertices, in AxisAlignedBox bounds, float relative, float absolute,
+            List<SoftBodyIssue> issues, out WeldedVertices welded)
+        {
+            float tolerance = ResolveTolerance(bounds, relative, absolute);
+            if (!math.isfinite(tolerance))
+            {
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, FormattableString.Invariant(
+                    $"WeldTolerance {relative} times the mesh diagonal {bounds.Diagonal} m is not a finite distance. Use a tolerance near the default {DefaultRelativeTolerance}.")));
+                welded = default;
+                return false;
+            }
+            welded = Weld(vertices, tolerance);
+            return true;
+        }
+
+        /// <summary>
         /// Welds <paramref name="vertices"/> (finite) in order: each vertex joins the lowest-numbered existing
         /// particle within <paramref name="tolerance"/> (distance ≤ tolerance), or starts a new particle
         /// at its own position. A particle therefore sits exactly at its first vertex (positions are not

@@ -31,14 +31,8 @@ namespace SoftBodyDynamics.Solvers
                 return result;
 
             AxisAlignedBox bounds = AxisAlignedBox.Of(vertices);
-            float tolerance = MeshWelding.ResolveTolerance(bounds, settings.WeldTolerance, settings.WeldDistance);
-            if (!math.isfinite(tolerance))
-            {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, Invariant(
-                    $"WeldTolerance {settings.WeldTolerance} times the mesh diagonal {bounds.Diagonal} m is not a finite distance. Use a tolerance near the default {MeshWelding.DefaultRelativeTolerance}.")));
+            if (!MeshWelding.TryWeld(vertices, bounds, settings.WeldTolerance, settings.WeldDistance, issues, out WeldedVertices welded))
                 return result;
-            }
-            WeldedVertices welded = MeshWelding.Weld(vertices, tolerance);
             result.VertexToParticle = welded.VertexToParticle;
             result.ParticleTriangles = MeshWelding.RemapTriangles(triangles, welded.VertexToParticle);
             result.SurfaceParticleCount = welded.ParticleCount;
