@@ -2,6 +2,7 @@ using System;
 using NUnit.Framework;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
+using static SoftBodyDynamics.Tests.Solvers.DoubleMatrix3;
 
 namespace SoftBodyDynamics.Tests.Solvers
 {
@@ -75,44 +76,6 @@ namespace SoftBodyDynamics.Tests.Solvers
                     forces[0, r] -= h;
                 }
             return forces;
-        }
-
-        static double[,] Mul(double[,] a, double[,] b)
-        {
-            var c = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    for (int k = 0; k < 3; k++)
-                        c[i, j] += a[i, k] * b[k, j];
-            return c;
-        }
-
-        static double Det(double[,] m) =>
-            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1]) - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
-            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
-
-        /// <summary>cof(m)[i, j] = (−1)^(i+j) minor: the derivative of det m with respect to m[i, j].</summary>
-        static double[,] Cofactor(double[,] m)
-        {
-            var c = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                {
-                    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-                    c[i, j] = m[i1, j1] * m[i2, j2] - m[i1, j2] * m[i2, j1];
-                }
-            return c;
-        }
-
-        static double[,] Inverse(double[,] m)
-        {
-            double[,] c = Cofactor(m);
-            double d = Det(m);
-            var inv = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    inv[i, j] = c[j, i] / d;
-            return inv;
         }
 
         /// <summary>
