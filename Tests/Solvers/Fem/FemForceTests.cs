@@ -2,6 +2,7 @@ using System;
 using NUnit.Framework;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
+using static SoftBodyDynamics.Tests.Solvers.DoubleMatrix3;
 
 namespace SoftBodyDynamics.Tests.Solvers
 {
@@ -30,33 +31,6 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         // ---- float64 reference energy
-
-        static double[,] Mul(double[,] a, double[,] b)
-        {
-            var c = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    for (int k = 0; k < 3; k++)
-                        c[i, j] += a[i, k] * b[k, j];
-            return c;
-        }
-
-        static double Det(double[,] m) =>
-            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1]) - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
-            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
-
-        static double[,] InverseTranspose(double[,] m)
-        {
-            double d = Det(m);
-            var c = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                {
-                    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-                    c[i, j] = (m[i1, j1] * m[i2, j2] - m[i1, j2] * m[i2, j1]) / d;
-                }
-            return c;
-        }
 
         static double[,] Edges(double[][] x)
         {
@@ -128,11 +102,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             double[][] xd = Array.ConvertAll(x, p => new double[] { p.x, p.y, p.z });
             double[][] restD = Array.ConvertAll(rest, p => new double[] { p.x, p.y, p.z });
             double[,] dmD = Edges(restD);
-            double[,] dmInvT = InverseTranspose(dmD);
-            var dmInvD = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    dmInvD[i, j] = dmInvT[j, i];
+            double[,] dmInvD = Inverse(dmD);
             double volume = Det(dmD) / 6;
             // Central difference with δ = 1e-6 m (1e-5 of the size): truncation (δ/L)² E''' ~ 1e-10 relative, far below
             // the float32 force's round-off (~1e-6 of the largest force: a dozen float operations on F ~ 1).
@@ -206,15 +176,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             var x = new float3[data.RestPositions.Length];
             for (int i = 0; i < x.Length; i++)
                 x[i] = math.mul(f0, data.RestPositions[i]);
-            float3x3 p0 = model == FemMaterialModel.CoRotational ? default : FemElasticity.NeoHookeanStress(f0, data.Mu, FemElasticity.NeoHookeanLambda(data.Mu, data.Lambda));
-            float pScale = 0f;
             foreach (TetElement t in data.Elements)
             {
                 float3x3 f = FemElasticity.DeformationGradient(x[t.Nodes.x], x[t.Nodes.y], x[t.Nodes.z], x[t.Nodes.w], t.InverseRestShape);
                 // F of every element equals F₀ to the rounding of the positions (~1e-7 relative, amplified by |x|/h = 3).
                 Assert.That(Matrix3.MaxAbs(f - f0), Is.LessThan(2e-6f));
-                if (model == FemMaterialModel.NeoHookean)
-                    pScale = Matrix3.MaxAbs(p0);
             }
             float3[] forces = BodyForces(data, model, x);
             float largest = 0f, interior = 0f;

@@ -9,42 +9,10 @@ namespace SoftBodyDynamics.Tests.Solvers
     public static class FemTestBodies
     {
         /// <summary>
-        /// A box of nx × ny × nz cubes of size <paramref name="size"/>/n per axis, from the origin, each split into six
-        /// positively oriented tetrahedra around its main diagonal (Kuhn's split: conforming between cubes).
+        /// A box of nx × ny × nz cells spanning [0, size] from the origin, each split into six positively oriented
+        /// tetrahedra (<see cref="BoxTetrahedra"/>, Kuhn's split: conforming between cells).
         /// </summary>
-        public static TetrahedralMesh Box(int nx, int ny, int nz, float3 size)
-        {
-            var positions = new float3[(nx + 1) * (ny + 1) * (nz + 1)];
-            int Index(int i, int j, int k) => (k * (ny + 1) + j) * (nx + 1) + i;
-            for (int k = 0; k <= nz; k++)
-                for (int j = 0; j <= ny; j++)
-                    for (int i = 0; i <= nx; i++)
-                        positions[Index(i, j, k)] = new float3(i * size.x / nx, j * size.y / ny, k * size.z / nz);
-            var tets = new List<int4>();
-            var permutations = new[]
-            {
-                new[] { 0, 1, 2 }, new[] { 0, 2, 1 }, new[] { 1, 0, 2 }, new[] { 1, 2, 0 }, new[] { 2, 0, 1 }, new[] { 2, 1, 0 },
-            };
-            for (int k = 0; k < nz; k++)
-                for (int j = 0; j < ny; j++)
-                    for (int i = 0; i < nx; i++)
-                        foreach (int[] perm in permutations)
-                        {
-                            var corner = new[] { i, j, k };
-                            var path = new int[4];
-                            path[0] = Index(corner[0], corner[1], corner[2]);
-                            for (int s = 0; s < 3; s++)
-                            {
-                                corner[perm[s]] += 1;
-                                path[s + 1] = Index(corner[0], corner[1], corner[2]);
-                            }
-                            var t = new int4(path[0], path[1], path[2], path[3]);
-                            if (TetrahedralMesh.SignedVolume(positions[t.x], positions[t.y], positions[t.z], positions[t.w]) < 0f)
-                                t = new int4(t.x, t.z, t.y, t.w);
-                            tets.Add(t);
-                        }
-            return new TetrahedralMesh(positions, tets.ToArray());
-        }
+        public static TetrahedralMesh Box(int nx, int ny, int nz, float3 size) => BoxTetrahedra.Create(size, new int3(nx, ny, nz), 0.5f * size);
 
         /// <summary>Bakes <paramref name="mesh"/>; throws when baking reports an error.</summary>
         public static FemModelData Bake(TetrahedralMesh mesh, ElasticMaterial material, bool[] pinned = null)

@@ -28,10 +28,12 @@ namespace SoftBodyDynamics.Tests.Solvers
             MassSpringSolver.Step(Data.AsModel(), p, ReadOnlySpan<ColliderShape>.Empty, dt, State, ref Status, batch);
 
         /// <summary>
-        /// A chain along x of <paramref name="springs"/> springs of rest length 1 m and stiffness <paramref name="k"/>
-        /// between particles of mass <paramref name="m"/>, particle 0 at x = −1 (pinned when <paramref name="fixedFirst"/>).
+        /// A chain along x of <paramref name="springs"/> springs of rest length <paramref name="restLength"/> (m), stiffness
+        /// <paramref name="k"/> and dashpot <paramref name="damping"/> between particles of mass <paramref name="m"/>, particle
+        /// 0 at x = <paramref name="start"/> (pinned when <paramref name="fixedFirst"/>), particle i at start + i · restLength.
         /// </summary>
-        public static MassSpringTestBody Chain(int springs, float k, float m, bool fixedFirst, float damping = 0f)
+        public static MassSpringTestBody Chain(int springs, float k, float m, bool fixedFirst, float damping = 0f, float restLength = 1f,
+            float start = -1f)
         {
             var rest = new float3[springs + 1];
             var masses = new float[springs + 1];
@@ -39,11 +41,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             var list = new Spring[springs];
             for (int i = 0; i <= springs; i++)
             {
-                rest[i] = new float3(i - 1f, 0f, 0f);
+                rest[i] = new float3(start + i * restLength, 0f, 0f);
                 masses[i] = m;
             }
             for (int e = 0; e < springs; e++)
-                list[e] = new Spring(e, e + 1, 1f, k, damping);
+                list[e] = new Spring(e, e + 1, restLength, k, damping);
             pinned[0] = fixedFirst;
             return new MassSpringTestBody(MassSpringModelData.Create(rest, masses, list, pinned));
         }

@@ -27,23 +27,12 @@ namespace SoftBodyDynamics.Tests.Solvers
             return tip;
         }
 
-        static MassSpringTestBody Chain(int springs)
-        {
-            // Dashpot c = 2√(k m) per spring (ζ = 1 for one spring): the chain's first mode decays in ~0.3 s.
-            var rest = new float3[springs + 1];
-            var masses = new float[springs + 1];
-            var pinned = new bool[springs + 1];
-            var list = new Spring[springs];
-            for (int i = 0; i <= springs; i++)
-            {
-                rest[i] = new float3(i * Rest, 0f, 0f);
-                masses[i] = M;
-            }
-            for (int e = 0; e < springs; e++)
-                list[e] = new Spring(e, e + 1, Rest, K, 2f * (float)Math.Sqrt(K * M));
-            pinned[0] = true;
-            return new MassSpringTestBody(MassSpringModelData.Create(rest, masses, list, pinned));
-        }
+        /// <summary>
+        /// The fixed–free chain from the origin. Dashpot c = 2√(k m) per spring (ζ = 1 for one spring): the chain's first mode
+        /// decays in ~0.3 s.
+        /// </summary>
+        static MassSpringTestBody Chain(int springs) =>
+            MassSpringTestBody.Chain(springs, K, M, fixedFirst: true, damping: 2f * (float)Math.Sqrt(K * M), restLength: Rest, start: 0f);
 
         /// <summary>Tip displacement, the mean over the last second of 10 s of 1/60 s steps at <paramref name="substeps"/>.</summary>
         static double XpbdTip(int springs, int substeps)

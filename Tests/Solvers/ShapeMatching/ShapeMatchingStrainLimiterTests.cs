@@ -2,6 +2,7 @@ using System;
 using NUnit.Framework;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
+using static SoftBodyDynamics.Tests.Solvers.DoubleMatrix3;
 
 namespace SoftBodyDynamics.Tests.Solvers
 {
@@ -30,11 +31,6 @@ namespace SoftBodyDynamics.Tests.Solvers
             { m.c0.y, m.c1.y, m.c2.y },
             { m.c0.z, m.c1.z, m.c2.z },
         };
-
-        static double Det(double[,] m) =>
-            m[0, 0] * (m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1])
-            - m[0, 1] * (m[1, 0] * m[2, 2] - m[1, 2] * m[2, 0])
-            + m[0, 2] * (m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]);
 
         static double Norm(double[,] m)
         {
