@@ -116,7 +116,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The factor c, its residual and the network's Poisson ratio for networks built with <paramref name="settings"/>.</summary>
         public static Result FitFactor(in MassSpringBuildSettings settings)
         {
-            TetrahedralMesh box = Box(ReferenceCells, ReferenceCells, ReferenceCells, 1f);
+            TetrahedralMesh box = BoxTetrahedra.Create(new float3(ReferenceCells), new int3(ReferenceCells), new float3(0.5f * ReferenceCells));
             MassSpringNetwork network = MassSpringNetwork.Build(box, settings, new List<SoftBodyIssue>());
             Apply(network, 1.0, 1.0, 0.0);
             var moduli = new double[3];
@@ -227,42 +227,6 @@ namespace SoftBodyDynamics.Solvers
             poisson = -0.5 * (strainB + strainC) / ReferenceStrain;
             displacement = u;
             return force / (widthB * widthC) / ReferenceStrain;
-        }
-
-        /// <summary>
-        /// A box of nx × ny × nz cubes of side <paramref name="cell"/> (m), each split into six positively oriented
-        /// tetrahedra around its diagonal from (0,0,0) to (1,1,1) (the Kuhn split: neighbouring cubes share faces).
-        /// </summary>
-        public static TetrahedralMesh Box(int nx, int ny, int nz, float cell)
-        {
-            var positions = new float3[(nx + 1) * (ny + 1) * (nz + 1)];
-            int Index(int i, int j, int k) => (k * (ny + 1) + j) * (nx + 1) + i;
-            for (int k = 0; k <= nz; k++)
-                for (int j = 0; j <= ny; j++)
-                    for (int i = 0; i <= nx; i++)
-                        positions[Index(i, j, k)] = new float3(i, j, k) * cell;
-            var tets = new List<int4>();
-            // The six monotone paths from corner 0 to corner 7 (one per permutation of the axes).
-            int[][] order = { new[] { 0, 1, 2 }, new[] { 0, 2, 1 }, new[] { 1, 0, 2 }, new[] { 1, 2, 0 }, new[] { 2, 0, 1 }, new[] { 2, 1, 0 } };
-            for (int k = 0; k < nz; k++)
-                for (int j = 0; j < ny; j++)
-                    for (int i = 0; i < nx; i++)
-                        foreach (int[] o in order)
-                        {
-                            var v = new[] { i, j, k };
-                            int a = Index(v[0], v[1], v[2]);
-                            v[o[0]]++;
-                            int b1 = Index(v[0], v[1], v[2]);
-                            v[o[1]]++;
-                            int c1 = Index(v[0], v[1], v[2]);
-                            v[o[2]]++;
-                            int d = Index(v[0], v[1], v[2]);
-                            var t = new int4(a, b1, c1, d);
-                            if (TetrahedralMesh.SignedVolume(positions[a], positions[b1], positions[c1], positions[d]) < 0f)
-                                t = new int4(a, c1, b1, d);
-                            tets.Add(t);
-                        }
-            return new TetrahedralMesh(positions, tets.ToArray());
         }
 
         /// <summary>y = K u with K = Σ kₑ nₑnₑᵀ (rest directions).</summary>

@@ -25,8 +25,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             // the geometric non-linearity the linear solve leaves out (L − L₀ = n·Δ + O(|Δ|²/L) and the turn of n: both
             // relative O(ε); measured 1.0 ε without and 0.5 ε with bending springs).
             const double e = 1e6, strain = 0.01;
-            TetrahedralMesh box = MassSpringCalibration.Box(MassSpringCalibration.ReferenceCells, MassSpringCalibration.ReferenceCells,
-                MassSpringCalibration.ReferenceCells, 0.1f);
+            int n = MassSpringCalibration.ReferenceCells;
+            TetrahedralMesh box = BoxTetrahedra.Create(new float3(0.1f * n), new int3(n), new float3(0.05f * n));
             var issues = new List<SoftBodyIssue>();
             MassSpringNetwork network = MassSpringNetwork.Build(box, settings, issues);
             MassSpringCalibration.Apply(network, e, fit.Factor, 0.0);
@@ -53,7 +53,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Calibration_PresetsGiveFinitePositiveStiffness()
         {
-            TetrahedralMesh mesh = MassSpringCalibration.Box(3, 2, 2, 0.05f);
+            TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(3, 2, 2) * 0.05f, new int3(3, 2, 2), 0.025f * new float3(3, 2, 2));
             foreach (ElasticMaterial material in new[] { ElasticMaterial.Jelly, ElasticMaterial.Rubber, ElasticMaterial.Clay, ElasticMaterial.Flesh })
             {
                 var issues = new List<SoftBodyIssue>();

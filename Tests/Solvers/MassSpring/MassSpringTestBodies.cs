@@ -69,7 +69,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public static MassSpringModelData Box(int nx, int ny, int nz, float cell, ElasticMaterial material, bool bending = false,
             bool[] pinned = null)
         {
-            TetrahedralMesh mesh = MassSpringCalibration.Box(nx, ny, nz, cell);
+            TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(nx, ny, nz) * cell, new int3(nx, ny, nz), 0.5f * cell * new float3(nx, ny, nz));
             var issues = new System.Collections.Generic.List<SoftBodyIssue>();
             return MassSpringModelData.FromMesh(mesh, material, new MassSpringBuildSettings { BendingSprings = bending }, issues, out _, pinned);
         }
