@@ -85,7 +85,7 @@ namespace SoftBodyDynamics
                 DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
             {
                 // The shape is the filter: only this method's bodies (the mass-spring system handles its own).
-                ParticleBodyImpulse.Apply(ref body, positions, velocities, impulse);
+                ParticleBodyImpulse.Apply(ref body.Status, positions, velocities, impulse);
                 pending.ValueRW = false;
             }
         }

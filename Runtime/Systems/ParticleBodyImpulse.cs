@@ -4,21 +4,21 @@ using Unity.Mathematics;
 
 namespace SoftBodyDynamics
 {
-    /// <summary>What the mass-spring and FEM systems share around the solver call: impulses and the NaN-guard log.</summary>
+    /// <summary>How every simulation system applies a <see cref="SoftBodyImpulse"/>, whatever the body's method.</summary>
     static class ParticleBodyImpulse
     {
         /// <summary>
-        /// Adds <paramref name="impulse"/> to every velocity (linear part, and ω × (xᵢ − c) about the centre of mass) and
-        /// wakes the body, as <see cref="SoftBodySimulationSystem"/> does for shape matching.
+        /// Adds <paramref name="impulse"/> to every velocity: Δvᵢ = Δv + Δω × (xᵢ − c), with c the centre of mass in the
+        /// positions' frame (<see cref="SoftBodyStatus.LocalCenter"/>), and wakes the body.
         /// </summary>
-        public static void Apply(ref ParticleBodyState body, DynamicBuffer<SoftBodyPosition> positions,
+        public static void Apply(ref SoftBodyStatus status, DynamicBuffer<SoftBodyPosition> positions,
             DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse)
         {
             var x = positions.Reinterpret<float3>().AsNativeArray();
             var v = velocities.Reinterpret<float3>().AsNativeArray();
             for (int i = 0; i < v.Length && i < x.Length; i++)
-                v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - body.Status.LocalCenter);
-            ParticleBodyStep.Wake(ref body.Status);
+                v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - status.LocalCenter);
+            ParticleBodyStep.Wake(ref status);
         }
     }
 }

@@ -58,11 +58,7 @@ namespace SoftBodyDynamics
             void Execute(ref SoftBodyState body, in DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
                 in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
             {
-                var x = positions.Reinterpret<float3>().AsNativeArray();
-                var v = velocities.Reinterpret<float3>().AsNativeArray();
-                for (int i = 0; i < v.Length && i < x.Length; i++)
-                    v[i] += impulse.LinearVelocityChange + math.cross(impulse.AngularVelocityChange, x[i] - body.Status.LocalCenter);
-                ShapeMatchingSolver.Wake(ref body.Status);
+                ParticleBodyImpulse.Apply(ref body.Status, positions, velocities, impulse);
                 pending.ValueRW = false;
             }
         }
