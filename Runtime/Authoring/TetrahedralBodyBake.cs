@@ -7,7 +7,9 @@ using UnityEngine;
 namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
-    /// The components of a baked mass-spring or FEM body (the baker and the tests share this one code path):
+    /// The components of a baked mass-spring or FEM body (the baker and the tests share this one code path; the simulation
+    /// components come from <see cref="SoftBodyArchetype.WriteMassSpring"/> / <see cref="SoftBodyArchetype.WriteFem"/>,
+    /// as for bodies made from code):
     /// <list type="bullet">
     /// <item>tier 1: the method's shape blob (<see cref="MassSpringShape"/> or <see cref="FemShape"/>) and the render
     /// embedding (<see cref="SoftBodyEmbedding"/>);</item>
@@ -34,25 +36,16 @@ namespace SoftBodyDynamics.Authoring
             {
                 BlobAssetReference<MassSpringShapeBlob> shape = MassSpringShapeBlobFactory.Create(body.MassSpring.AsModel(), Allocator.Persistent);
                 writer.AddBlob(ref shape);
-                writer.AddComponent(new MassSpringShape { Blob = shape });
-                writer.AddComponent(new MassSpringSettings { Value = authoring.MassSpringParameters });
+                SoftBodyArchetype.WriteMassSpring(writer, shape, authoring.MassSpringParameters);
                 AddEmbedding(build, body.MassSpring.RestPositions, body.MassSpring.RestCenter, writer);
             }
             else
             {
                 BlobAssetReference<FemShapeBlob> shape = FemShapeBlobFactory.Create(body.Fem.AsModel(), Allocator.Persistent);
                 writer.AddBlob(ref shape);
-                writer.AddComponent(new FemShape { Blob = shape });
-                writer.AddComponent(new FemSettings { Value = authoring.FemParameters });
-                writer.AddComponent(new FemDiagnostics());
-                writer.AddBuffer<FemElementRotation>();
+                SoftBodyArchetype.WriteFem(writer, shape, authoring.FemParameters);
                 AddEmbedding(build, body.Fem.RestPositions, body.Fem.RestCenter, writer);
             }
-            writer.AddComponent(ParticleBodyState.Unstepped);
-            writer.AddBuffer<SoftBodyPosition>();
-            writer.AddBuffer<SoftBodyVelocity>();
-            writer.AddComponent(new SoftBodyUninitialized(), true);
-            writer.AddComponent(new SoftBodyImpulse(), false);
             if (renderMesh != null)
                 writer.AddComponent(new SoftBodyRenderMesh { Mesh = renderMesh });
         }

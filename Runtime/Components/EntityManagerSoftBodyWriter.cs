@@ -2,12 +2,12 @@ using System;
 using System.Collections.Generic;
 using Unity.Entities;
 
-namespace SoftBodyDynamics.Authoring
+namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Writes a baked body's components straight onto an entity with an <see cref="EntityManager"/> (main thread,
-    /// structural changes). The blobs stay owned by this writer: <see cref="Dispose"/> releases them, after the world that
-    /// uses them.
+    /// Writes a body's components straight onto an entity with an <see cref="EntityManager"/> (main thread,
+    /// structural changes). The blobs handed to it (<see cref="AddBlob"/>) stay owned by this writer: <see cref="Dispose"/>
+    /// releases them, after the world that uses them.
     /// </summary>
     public sealed class EntityManagerSoftBodyWriter : ISoftBodyEntityWriter, IDisposable
     {

@@ -1,11 +1,12 @@
 using Unity.Entities;
 
-namespace SoftBodyDynamics.Authoring
+namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Where baking writes a body's components: the baker (<see cref="SoftBodyBaker"/>) or, for bodies made from code and
-    /// for tests, an <see cref="EntityManager"/> (<see cref="EntityManagerSoftBodyWriter"/>). One code path
-    /// (<see cref="TetrahedralBodyBake.Write"/>) decides the component set for both.
+    /// Where a body's components go: a baker (<c>SoftBodyBaker</c>) or, for bodies made from code and for tests, an
+    /// <see cref="EntityManager"/> (<see cref="EntityManagerSoftBodyWriter"/>). The component set of a mass-spring or FEM
+    /// body is written through it by one function per method (<see cref="SoftBodyArchetype.WriteMassSpring"/>,
+    /// <see cref="SoftBodyArchetype.WriteFem"/>) for both.
     /// </summary>
     public interface ISoftBodyEntityWriter
     {

@@ -5,9 +5,10 @@ using Unity.Transforms;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// The components a simulated soft body carries, for bodies created from code (bakers add the same
-    /// set with <c>IBaker</c>): shape, settings, state, the particle (and cluster or element) buffers, an enabled
-    /// <see cref="SoftBodyUninitialized"/> and a disabled <see cref="SoftBodyImpulse"/>, for each method.
+    /// The components a simulated soft body carries, for bodies created from code: shape, settings, state, the particle
+    /// (and cluster or element) buffers, an enabled <see cref="SoftBodyUninitialized"/> and a disabled
+    /// <see cref="SoftBodyImpulse"/>, for each method. The shape-matching baker adds the same set with <c>IBaker</c>; the
+    /// mass-spring and FEM bakers write theirs through <see cref="WriteMassSpring"/> and <see cref="WriteFem"/>.
     /// </summary>
     public static class SoftBodyArchetype
     {
@@ -50,8 +51,8 @@ namespace SoftBodyDynamics
 
         /// <summary>
         /// Makes <paramref name="entity"/> a mass-spring body of <paramref name="shape"/>, placed at its
-        /// <see cref="LocalTransform"/> by the next update of <see cref="MassSpringSimulationSystem"/>. Structural change:
-        /// call it on the main thread.
+        /// <see cref="LocalTransform"/> (identity is added when it has none) by the next update of
+        /// <see cref="MassSpringSimulationSystem"/>. Structural change: call it on the main thread.
         /// </summary>
         /// <param name="entityManager">The world's entity manager.</param>
         /// <param name="entity">A root entity (bodies simulate in world space).</param>
@@ -60,15 +61,15 @@ namespace SoftBodyDynamics
         public static void AddMassSpringComponents(EntityManager entityManager, Entity entity, BlobAssetReference<MassSpringShapeBlob> shape,
             in MassSpringParameters parameters)
         {
-            entityManager.AddComponentData(entity, new MassSpringShape { Blob = shape });
-            entityManager.AddComponentData(entity, new MassSpringSettings { Value = parameters });
-            AddParticleBodyComponents(entityManager, entity);
+            using (var writer = new EntityManagerSoftBodyWriter(entityManager, entity))
+                WriteMassSpring(writer, shape, parameters);
+            AddTransformIfMissing(entityManager, entity);
         }
 
         /// <summary>
         /// Makes <paramref name="entity"/> a finite-element body of <paramref name="shape"/>, placed at its
-        /// <see cref="LocalTransform"/> by the next update of <see cref="FemSimulationSystem"/>. Structural change: call it
-        /// on the main thread.
+        /// <see cref="LocalTransform"/> (identity is added when it has none) by the next update of
+        /// <see cref="FemSimulationSystem"/>. Structural change: call it on the main thread.
         /// </summary>
         /// <param name="entityManager">The world's entity manager.</param>
         /// <param name="entity">A root entity (bodies simulate in world space).</param>
@@ -77,23 +78,52 @@ namespace SoftBodyDynamics
         public static void AddFemComponents(EntityManager entityManager, Entity entity, BlobAssetReference<FemShapeBlob> shape,
             in FemParameters parameters)
         {
-            entityManager.AddComponentData(entity, new FemShape { Blob = shape });
-            entityManager.AddComponentData(entity, new FemSettings { Value = parameters });
-            entityManager.AddComponentData(entity, new FemDiagnostics());
-            entityManager.AddBuffer<FemElementRotation>(entity);
-            AddParticleBodyComponents(entityManager, entity);
+            using (var writer = new EntityManagerSoftBodyWriter(entityManager, entity))
+                WriteFem(writer, shape, parameters);
+            AddTransformIfMissing(entityManager, entity);
+        }
+
+        /// <summary>
+        /// The simulation components of a mass-spring body (the one definition the baker and
+        /// <see cref="AddMassSpringComponents"/> share): <see cref="MassSpringShape"/>, <see cref="MassSpringSettings"/>,
+        /// <see cref="ParticleBodyState"/>, the particle buffers, <see cref="SoftBodyUninitialized"/> enabled and
+        /// <see cref="SoftBodyImpulse"/> disabled. The blob is not handed to the writer (the caller owns it); no transform
+        /// or render components.
+        /// </summary>
+        public static void WriteMassSpring(ISoftBodyEntityWriter writer, BlobAssetReference<MassSpringShapeBlob> shape,
+            in MassSpringParameters parameters)
+        {
+            writer.AddComponent(new MassSpringShape { Blob = shape });
+            writer.AddComponent(new MassSpringSettings { Value = parameters });
+            WriteParticleBody(writer);
+        }
+
+        /// <summary>
+        /// The simulation components of a finite-element body (shared as <see cref="WriteMassSpring"/> is):
+        /// <see cref="FemShape"/>, <see cref="FemSettings"/>, <see cref="FemDiagnostics"/>, the
+        /// <see cref="FemElementRotation"/> buffer and the particle-body components.
+        /// </summary>
+        public static void WriteFem(ISoftBodyEntityWriter writer, BlobAssetReference<FemShapeBlob> shape, in FemParameters parameters)
+        {
+            writer.AddComponent(new FemShape { Blob = shape });
+            writer.AddComponent(new FemSettings { Value = parameters });
+            writer.AddComponent(new FemDiagnostics());
+            writer.AddBuffer<FemElementRotation>();
+            WriteParticleBody(writer);
         }
 
         /// <summary>What mass-spring and FEM bodies share: state, particle buffers, an enabled uninitialized tag, a disabled impulse.</summary>
-        static void AddParticleBodyComponents(EntityManager entityManager, Entity entity)
+        static void WriteParticleBody(ISoftBodyEntityWriter writer)
         {
-            entityManager.AddComponentData(entity, ParticleBodyState.Unstepped);
-            entityManager.AddBuffer<SoftBodyPosition>(entity);
-            entityManager.AddBuffer<SoftBodyVelocity>(entity);
-            entityManager.AddComponent<SoftBodyUninitialized>(entity);
-            entityManager.SetComponentEnabled<SoftBodyUninitialized>(entity, true);
-            entityManager.AddComponent<SoftBodyImpulse>(entity);
-            entityManager.SetComponentEnabled<SoftBodyImpulse>(entity, false);
+            writer.AddComponent(ParticleBodyState.Unstepped);
+            writer.AddBuffer<SoftBodyPosition>();
+            writer.AddBuffer<SoftBodyVelocity>();
+            writer.AddComponent(new SoftBodyUninitialized(), true);
+            writer.AddComponent(new SoftBodyImpulse(), false);
+        }
+
+        static void AddTransformIfMissing(EntityManager entityManager, Entity entity)
+        {
             if (!entityManager.HasComponent<LocalTransform>(entity))
                 entityManager.AddComponentData(entity, LocalTransform.Identity);
         }
