@@ -43,24 +43,13 @@ namespace SoftBodyDynamics.Benchmarks
             using (var body = new ShapeMatchingJobBody(placed, floor, ShapeMatchingBenchmarkBody.TimeStep))
             {
                 ShapeMatchingStepJob job = body.Job;
-                int stepsSincePlacement = 0;
                 string label = $"ShapeMatchingThroughput {ShapeMatchingBenchmarkBody.Label(mode, layout)} x{placed.Model.ParticleCount} Burst job step";
-                Measure.Method(() => job.Run())
-                    .SetUp(() =>
+                StepCycleMeasure.Steps(() => job.Run(), () =>
                     {
-                        if (stepsSincePlacement == ShapeMatchingThroughputScenario.CycleSteps)
-                        {
-                            placed.Reset(start, quaternion.identity);
-                            body.Reset(placed);
-                            stepsSincePlacement = 0;
-                        }
-                        stepsSincePlacement++;
-                    })
-                    .WarmupCount(k_WarmupCount)
-                    .MeasurementCount(k_MeasurementCount)
-                    .IterationsPerMeasurement(1)
-                    .SampleGroup(new SampleGroup(label, SampleUnit.Millisecond))
-                    .Run();
+                        placed.Reset(start, quaternion.identity);
+                        body.Reset(placed);
+                    },
+                    ShapeMatchingThroughputScenario.CycleSteps, label, k_WarmupCount, k_MeasurementCount);
 
                 ShapeMatchingStepReport report = body.LastReport;
                 Assert.That(report.Stepped, Is.True, "the job stepped the body");

@@ -54,22 +54,13 @@ namespace SoftBodyDynamics.Benchmarks
             };
             try
             {
-                int steps = k_CycleSteps;
-                Measure.Method(() => job.Run())
-                    .SetUp(() =>
+                StepCycleMeasure.Steps(() => job.Run(), () =>
                     {
-                        if (steps++ < k_CycleSteps)
-                            return;
-                        steps = 1;
                         var state = MassSpringState.FromScratch(positions.AsSpan(), velocities.AsSpan(), default, default);
                         MassSpringSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out SoftBodyStatus placed);
                         status[0] = placed;
-                    })
-                    .WarmupCount(k_WarmupCount)
-                    .MeasurementCount(k_MeasurementCount)
-                    .IterationsPerMeasurement(1)
-                    .SampleGroup(new SampleGroup($"MassSpring {integrator} x{n} Burst job step", SampleUnit.Millisecond))
-                    .Run();
+                    },
+                    k_CycleSteps, $"MassSpring {integrator} x{n} Burst job step", k_WarmupCount, k_MeasurementCount);
                 Assert.That(report[0].Stepped, Is.True, "the job stepped the body");
                 Assert.That(report[0].Reset, Is.False, "no NaN-guard reset");
             }
@@ -114,22 +105,13 @@ namespace SoftBodyDynamics.Benchmarks
             };
             try
             {
-                int steps = k_CycleSteps;
-                Measure.Method(() => job.Run())
-                    .SetUp(() =>
+                StepCycleMeasure.Steps(() => job.Run(), () =>
                     {
-                        if (steps++ < k_CycleSteps)
-                            return;
-                        steps = 1;
                         var state = new FemState(positions.AsSpan(), velocities.AsSpan(), rotations.AsSpan(), default, default, default, default, default, default);
                         FemSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out SoftBodyStatus placed);
                         status[0] = placed;
-                    })
-                    .WarmupCount(k_WarmupCount)
-                    .MeasurementCount(k_MeasurementCount)
-                    .IterationsPerMeasurement(1)
-                    .SampleGroup(new SampleGroup($"Fem {materialModel} {integrator} x{n} Burst job step", SampleUnit.Millisecond))
-                    .Run();
+                    },
+                    k_CycleSteps, $"Fem {materialModel} {integrator} x{n} Burst job step", k_WarmupCount, k_MeasurementCount);
                 Assert.That(report[0].Step.Stepped, Is.True, "the job stepped the body");
                 Assert.That(report[0].Step.Reset, Is.False, "no NaN-guard reset");
             }
