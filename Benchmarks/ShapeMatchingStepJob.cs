@@ -33,15 +33,12 @@ namespace SoftBodyDynamics.Benchmarks
         public NativeArray<float3> Velocities;
         /// <summary>Per-cluster state.</summary>
         public NativeArray<ClusterState> Clusters;
-        /// <summary>Scratch of <see cref="ScratchPerParticle"/> × particles: predicted positions, goals, contact normals.</summary>
+        /// <summary>Scratch of <see cref="ShapeMatchingState.ScratchPerParticle"/> × particles.</summary>
         public NativeArray<float3> Scratch;
         /// <summary>The body's status, one element, read and written by the step.</summary>
         public NativeArray<SoftBodyStatus> Status;
         /// <summary>The report of the last step, one element.</summary>
         public NativeArray<ShapeMatchingStepReport> Report;
-
-        /// <summary>Scratch float3s per particle the step needs (<see cref="ShapeMatchingState.ScratchPerParticle"/>).</summary>
-        public const int ScratchPerParticle = ShapeMatchingState.ScratchPerParticle;
 
         public void Execute()
         {
@@ -81,7 +78,7 @@ namespace SoftBodyDynamics.Benchmarks
             m_Positions = new NativeArray<float3>(body.Positions, Allocator.Persistent);
             m_Velocities = new NativeArray<float3>(body.Velocities, Allocator.Persistent);
             m_Clusters = new NativeArray<ClusterState>(body.Clusters, Allocator.Persistent);
-            m_Scratch = new NativeArray<float3>(ShapeMatchingStepJob.ScratchPerParticle * body.Model.ParticleCount, Allocator.Persistent);
+            m_Scratch = new NativeArray<float3>(ShapeMatchingState.ScratchPerParticle * body.Model.ParticleCount, Allocator.Persistent);
             m_Status = new NativeArray<SoftBodyStatus>(new[] { body.Status }, Allocator.Persistent);
             m_Report = new NativeArray<ShapeMatchingStepReport>(1, Allocator.Persistent);
             Job = new ShapeMatchingStepJob

@@ -9,9 +9,6 @@ namespace SoftBodyDynamics
     /// <summary>Span views of a body's buffers and scratch, as the solver takes them (no copies).</summary>
     static class SoftBodyBuffers
     {
-        /// <summary>Scratch float3s per particle the step needs (<see cref="ShapeMatchingState.ScratchPerParticle"/>).</summary>
-        public const int ScratchPerParticle = ShapeMatchingState.ScratchPerParticle;
-
         public static Span<float3> AsSpan(DynamicBuffer<SoftBodyPosition> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
 
         public static Span<float3> AsSpan(DynamicBuffer<SoftBodyVelocity> buffer) => buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
@@ -21,7 +18,7 @@ namespace SoftBodyDynamics
         public static Span<float3x3> AsSpan(DynamicBuffer<SoftBodyQuadraticInverse> buffer) => buffer.Reinterpret<float3x3>().AsNativeArray().AsSpan();
 
         /// <summary>
-        /// The solver state over the buffers and a scratch array of <see cref="ScratchPerParticle"/> × particles
+        /// The solver state over the buffers and a scratch array of <see cref="ShapeMatchingState.ScratchPerParticle"/> × particles
         /// (allocate it with <see cref="Allocator.Temp"/> inside the job).
         /// </summary>
         public static ShapeMatchingState State(DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,

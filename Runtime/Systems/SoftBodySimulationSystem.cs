@@ -92,7 +92,7 @@ namespace SoftBodyDynamics
                     && perInstance.Length == blob.QuadraticInverse.Length)
                     quadratic = SoftBodyBuffers.AsSpan(perInstance);
 
-                var scratch = new NativeArray<float3>(SoftBodyBuffers.ScratchPerParticle * n, Allocator.Temp,
+                var scratch = new NativeArray<float3>(ShapeMatchingState.ScratchPerParticle * n, Allocator.Temp,
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
                 ShapeMatchingParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
