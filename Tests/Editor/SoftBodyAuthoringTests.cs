@@ -13,17 +13,6 @@ namespace SoftBodyDynamics.Tests.Editor
     /// </summary>
     public class SoftBodyAuthoringTests
     {
-        /// <summary>A closed unit cube, 8 vertices, 12 triangles wound outwards ((b − a) × (c − a) points out).</summary>
-        static readonly int[] k_CubeTriangles =
-        {
-            0, 2, 1, 0, 3, 2, // −Z
-            4, 5, 6, 4, 6, 7, // +Z
-            0, 4, 7, 0, 7, 3, // −X
-            1, 2, 6, 1, 6, 5, // +X
-            0, 1, 5, 0, 5, 4, // −Y
-            3, 7, 6, 3, 6, 2, // +Y
-        };
-
         readonly List<Object> m_Created = new List<Object>();
 
         [TearDown]
@@ -37,16 +26,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
         Mesh CreateCubeMesh()
         {
-            const float h = 0.5f;
-            var mesh = new Mesh
-            {
-                vertices = new[]
-                {
-                    new Vector3(-h, -h, -h), new Vector3(h, -h, -h), new Vector3(h, h, -h), new Vector3(-h, h, -h),
-                    new Vector3(-h, -h, h), new Vector3(h, -h, h), new Vector3(h, h, h), new Vector3(-h, h, h),
-                },
-                triangles = k_CubeTriangles,
-            };
+            Mesh mesh = AuthoringTestData.CreateCubeMesh();
             m_Created.Add(mesh);
             return mesh;
         }
@@ -72,23 +52,9 @@ namespace SoftBodyDynamics.Tests.Editor
             return collider;
         }
 
-        static List<SoftBodyIssueCode> Errors(List<SoftBodyIssue> issues)
-        {
-            var codes = new List<SoftBodyIssueCode>();
-            foreach (SoftBodyIssue issue in issues)
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
-                    codes.Add(issue.Code);
-            return codes;
-        }
+        static List<SoftBodyIssueCode> Errors(List<SoftBodyIssue> issues) => AuthoringTestData.Codes(issues, SoftBodyIssueSeverity.Error);
 
-        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity)
-        {
-            var codes = new List<SoftBodyIssueCode>();
-            foreach (SoftBodyIssue issue in issues)
-                if (issue.Severity == severity)
-                    codes.Add(issue.Code);
-            return codes;
-        }
+        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
 
         // ---------------------------------------------------------------- soft body validation
 
@@ -102,7 +68,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(Errors(build.Issues), Is.Empty, string.Join("\n", build.Issues));
             Assert.That(build.Succeeded, Is.True);
             Assert.That(build.Result.ParticleCount, Is.EqualTo(8));
-            Assert.That(build.Mesh.Triangles, Is.EqualTo(k_CubeTriangles));
+            Assert.That(build.Mesh.Triangles, Is.EqualTo(AuthoringTestData.CubeTriangles));
         }
 
         [Test]

@@ -14,12 +14,6 @@ namespace SoftBodyDynamics.Tests.Editor
     /// </summary>
     public class TetrahedralBodyBakingTests
     {
-        /// <summary>A closed 1 m cube, 8 vertices, 12 triangles wound outwards.</summary>
-        static readonly int[] k_CubeTriangles =
-        {
-            0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5, 0, 1, 5, 0, 5, 4, 3, 7, 6, 3, 6, 2,
-        };
-
         readonly List<Object> m_Created = new List<Object>();
         World m_World;
         readonly List<EntityManagerSoftBodyWriter> m_Writers = new List<EntityManagerSoftBodyWriter>();
@@ -42,16 +36,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
         SoftBodyAuthoring CreateBody(SoftBodyMethod method)
         {
-            const float h = 0.5f;
-            var mesh = new Mesh
-            {
-                vertices = new[]
-                {
-                    new Vector3(-h, -h, -h), new Vector3(h, -h, -h), new Vector3(h, h, -h), new Vector3(-h, h, -h),
-                    new Vector3(-h, -h, h), new Vector3(h, -h, h), new Vector3(h, h, h), new Vector3(-h, h, h),
-                },
-                triangles = k_CubeTriangles,
-            };
+            Mesh mesh = AuthoringTestData.CreateCubeMesh();
             m_Created.Add(mesh);
             var gameObject = new GameObject("Tetrahedral Body Under Test");
             m_Created.Add(gameObject);
@@ -72,14 +57,7 @@ namespace SoftBodyDynamics.Tests.Editor
             return entity;
         }
 
-        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity)
-        {
-            var codes = new List<SoftBodyIssueCode>();
-            foreach (SoftBodyIssue issue in issues)
-                if (issue.Severity == severity)
-                    codes.Add(issue.Code);
-            return codes;
-        }
+        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
 
         [Test]
         public void Bake_MassSpring_AddsItsComponents_AndBlobsOfTheBuiltSizes()
