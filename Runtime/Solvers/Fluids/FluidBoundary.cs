@@ -1,0 +1,74 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Walls seen by the SPH sums: the six faces of the domain box and every collider, each treated locally as a
+    /// plane filled with fluid at rest density (a continuous version of Akinci et al. 2012's boundary particles). A wall
+    /// at distance d adds ρ₀·Φ(d) to a particle's density (<see cref="SphKernels.WallDensityFraction"/>) and its
+    /// pressure gradient pushes along the wall normal with magnitude G(d) (<see cref="SphKernels.WallGradientMagnitude"/>),
+    /// so a resting column feels the floor's support without a layer of boundary particles. Curved colliders are
+    /// approximated by their tangent plane at the closest point (error of order h/R).
+    /// </summary>
+    public static class FluidBoundary
+    {
+        /// <summary>
+        /// Sums over the walls within h of <paramref name="x"/>: <paramref name="densityFraction"/> = Σ Φ(d) and
+        /// <paramref name="push"/> = Σ G(d)·n with n the unit normal out of the wall (1/m).
+        /// </summary>
+        public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
+            out float densityFraction, out float3 push)
+        {
+            SphKernels k = c.Kernels;
+            float3 below = x - c.Parameters.DomainMin;
+            float3 above = c.Parameters.DomainMax - x;
+            densityFraction = 0f;
+            push = float3.zero;
+            for (int axis = 0; axis < 3; axis++)
+            {
+                float dBelow = axis == 0 ? below.x : axis == 1 ? below.y : below.z;
+                float dAbove = axis == 0 ? above.x : axis == 1 ? above.y : above.z;
+                float3 n = axis == 0 ? new float3(1f, 0f, 0f) : axis == 1 ? new float3(0f, 1f, 0f) : new float3(0f, 0f, 1f);
+                if (dBelow < k.H)
+                {
+                    densityFraction += k.WallDensityFraction(dBelow);
+                    push += k.WallGradientMagnitude(dBelow) * n;
+                }
+                if (dAbove < k.H)
+                {
+                    densityFraction += k.WallDensityFraction(dAbove);
+                    push -= k.WallGradientMagnitude(dAbove) * n;
+                }
+            }
+            for (int w = 0; w < colliders.Length; w++)
+            {
+                // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+                if (!ParticleCollision.Penetration(colliders[w], x, k.H, out float3 normal, out float depth))
+                    continue;
+                float d = k.H - depth;
+                densityFraction += k.WallDensityFraction(d);
+                push += k.WallGradientMagnitude(d) * normal;
+            }
+        }
+
+        /// <summary>
+        /// Keeps <paramref name="x"/> at least <see cref="FluidConstants.WallDistance"/> inside the domain box and
+        /// removes the velocity component into a face it touches. Returns true when it moved the particle.
+        /// </summary>
+        public static bool ClampToDomain(in FluidConstants c, ref float3 x, ref float3 v)
+        {
+            float3 lo = c.Parameters.DomainMin + c.WallDistance;
+            float3 hi = c.Parameters.DomainMax - c.WallDistance;
+            float3 clamped = math.clamp(x, lo, hi);
+            if (math.all(clamped == x))
+                return false;
+            // Remove the velocity component into each face the particle was pushed off.
+            if (x.x < lo.x) v.x = math.max(v.x, 0f); else if (x.x > hi.x) v.x = math.min(v.x, 0f);
+            if (x.y < lo.y) v.y = math.max(v.y, 0f); else if (x.y > hi.y) v.y = math.min(v.y, 0f);
+            if (x.z < lo.z) v.z = math.max(v.z, 0f); else if (x.z > hi.z) v.z = math.min(v.z, 0f);
+            x = clamped;
+            return true;
+        }
+    }
+}

@@ -1,0 +1,51 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Everything a fluid step derives from its (sanitized) parameters, computed once on the CPU: kernels, grid,
+    /// particle mass, Tait stiffness, wall distance. The GPU backend uploads the same values as constants.
+    /// </summary>
+    public readonly struct FluidConstants
+    {
+        public readonly FluidParameters Parameters;
+        public readonly SphKernels Kernels;
+        public readonly FluidGrid Grid;
+        /// <summary>Particle mass m (kg): ρ₀ over the poly6 sum of a particle in a full cubic lattice at the spacing, so that the lattice is at rest density.</summary>
+        public readonly float Mass;
+        /// <summary>Tait stiffness B = ρ₀c₀²/γ (Pa).</summary>
+        public readonly float TaitStiffness;
+        /// <summary>Closest a particle centre comes to a wall or collider surface (m): half the spacing.</summary>
+        public readonly float WallDistance;
+        /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
+        public readonly float Relaxation;
+
+        public FluidConstants(in FluidParameters parameters)
+        {
+            Parameters = parameters.Sanitized();
+            float h = Parameters.KernelRadius;
+            Kernels = new SphKernels(h);
+            Grid = GridOf(Parameters);
+            Mass = Parameters.RestDensity / LatticeKernelSum(Kernels, Parameters.ParticleSpacing);
+            TaitStiffness = Parameters.RestDensity * Parameters.SpeedOfSound * Parameters.SpeedOfSound / FluidParameters.TaitExponent;
+            WallDistance = 0.5f * Parameters.ParticleSpacing;
+            Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
+        }
+
+        /// <summary>The grid of a fluid: its domain box in cells of the kernel radius.</summary>
+        public static FluidGrid GridOf(in FluidParameters sanitized) =>
+            new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius);
+
+        /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
+        public static float LatticeKernelSum(in SphKernels kernels, float spacing)
+        {
+            int n = (int)math.ceil(kernels.H / spacing);
+            double sum = 0;
+            for (int z = -n; z <= n; z++)
+            for (int y = -n; y <= n; y++)
+            for (int x = -n; x <= n; x++)
+                sum += kernels.Poly6(spacing * spacing * (x * x + y * y + z * z));
+            return (float)sum;
+        }
+    }
+}

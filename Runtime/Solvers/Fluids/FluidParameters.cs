@@ -1,0 +1,133 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Per-fluid tunables (a component in ECS). Units are in each doc comment. Every value means the same at any frame
+    /// rate: the step splits a frame into CFL-limited substeps, viscosity is implicit and the flocking rules are rates.
+    /// </summary>
+    public struct FluidParameters
+    {
+        /// <summary>Pressure solver (<see cref="FluidSolverKind"/>). Default: weakly compressible SPH.</summary>
+        public FluidSolverKind Solver;
+        /// <summary>Rest distance Δx between particles (m): sets particle mass and the spawn lattice. Default 0.02 m.</summary>
+        public float ParticleSpacing;
+        /// <summary>Kernel radius h as a multiple of <see cref="ParticleSpacing"/> (1.5–4). Default 2 (about 30 neighbours).</summary>
+        public float KernelRadiusRatio;
+        /// <summary>Rest density ρ₀ (kg/m³). Water 1000.</summary>
+        public float RestDensity;
+        /// <summary>
+        /// Weakly compressible: numerical speed of sound c₀ (m/s); the Tait stiffness is B = ρ₀c₀²/γ. Density error is
+        /// about (v_max / c₀)², so c₀ = 10·v_max keeps it near 1 %. The substep is at most
+        /// <see cref="CflNumber"/>·h / (c₀ + v_max), so a stiffer fluid costs more substeps. Default 10 m/s.
+        /// </summary>
+        public float SpeedOfSound;
+        /// <summary>Position-based: density-constraint iterations per substep (1–100). Default 4.</summary>
+        public int PressureIterations;
+        /// <summary>Kinematic viscosity ν (m²/s): water 1e-6, oil 1e-4, honey 5e-3. Integrated implicitly, so any value is stable.</summary>
+        public float Viscosity;
+        /// <summary>Jacobi iterations of the implicit viscosity solve per substep (0–50; 0 = no viscosity pass). Default 4.</summary>
+        public int ViscosityIterations;
+        /// <summary>Cohesion model (<see cref="FluidCohesionModel"/>). Default: none.</summary>
+        public FluidCohesionModel Cohesion;
+        /// <summary>Flocking: acceleration toward the neighbour centroid per metre of offset (1/s²). 0 = off.</summary>
+        public float CohesionWeight;
+        /// <summary>Flocking: acceleration away from neighbours closer than the spacing, per metre of overlap (1/s²). 0 = off.</summary>
+        public float SeparationWeight;
+        /// <summary>Flocking: rate at which a velocity relaxes toward the neighbours' kernel-weighted mean (XSPH), 1/s. 0 = off.</summary>
+        public float AlignmentRate;
+        /// <summary>Akinci et al. 2013: surface tension coefficient γ of the cohesion and curvature forces (m³/(kg·s²)... scaled, see FluidForces). 0 = off.</summary>
+        public float SurfaceTension;
+        /// <summary>Uniform acceleration on every particle: gravity times the fluid's gravity scale (m/s²).</summary>
+        public float3 Gravity;
+        /// <summary>Lower corner of the domain box (m, world). Particles stay inside; the grid covers it.</summary>
+        public float3 DomainMin;
+        /// <summary>Upper corner of the domain box (m, world).</summary>
+        public float3 DomainMax;
+        /// <summary>Fraction of the tangential velocity a wall contact removes per contact (0 = free slip, 1 = no slip).</summary>
+        public float WallFriction;
+        /// <summary>CFL number λ of the adaptive substep: h·λ / (c₀ + v_max) (weakly compressible) or h·λ / v_max (position-based). Default 0.4.</summary>
+        public float CflNumber;
+        /// <summary>Most substeps per step (1–256). When the CFL limit asks for more, the step reports it and runs this many. Default 32.</summary>
+        public int MaxSubsteps;
+        /// <summary>Speed bound (m/s): faster particles are slowed to it and counted in the report. Default 50 m/s.</summary>
+        public float MaxSpeed;
+        /// <summary>Density ratio ρ/ρ₀ above which a particle is counted as over-compressed in the report. Default 1.5.</summary>
+        public float MaxDensityRatio;
+
+        /// <summary>Most substeps a step may take.</summary>
+        public const int SubstepLimit = 256;
+        /// <summary>Most position-based iterations per substep.</summary>
+        public const int MaxPressureIterations = 100;
+        /// <summary>Most viscosity Jacobi iterations per substep.</summary>
+        public const int MaxViscosityIterations = 50;
+        /// <summary>Tait exponent γ (Becker &amp; Teschner 2007).</summary>
+        public const float TaitExponent = 7f;
+
+        /// <summary>Kernel radius h (m).</summary>
+        public float KernelRadius => ParticleSpacing * KernelRadiusRatio;
+
+        /// <summary>Water at 2 cm spacing in a 1 m box above the origin.</summary>
+        public static FluidParameters Default => new FluidParameters
+        {
+            Solver = FluidSolverKind.WeaklyCompressible,
+            ParticleSpacing = 0.02f,
+            KernelRadiusRatio = 2f,
+            RestDensity = 1000f,
+            SpeedOfSound = 10f,
+            PressureIterations = 4,
+            Viscosity = 1e-6f,
+            ViscosityIterations = 4,
+            Cohesion = FluidCohesionModel.None,
+            CohesionWeight = 0f,
+            SeparationWeight = 0f,
+            AlignmentRate = 0f,
+            SurfaceTension = 0f,
+            Gravity = new float3(0f, -9.81f, 0f),
+            DomainMin = new float3(-0.5f, 0f, -0.5f),
+            DomainMax = new float3(0.5f, 1f, 0.5f),
+            WallFriction = 0f,
+            CflNumber = 0.4f,
+            MaxSubsteps = 32,
+            MaxSpeed = 50f,
+            MaxDensityRatio = 1.5f,
+        };
+
+        /// <summary>A copy the step can trust: NaN or out-of-range values replaced by the nearest valid value (or the default).</summary>
+        public FluidParameters Sanitized()
+        {
+            FluidParameters d = Default;
+            FluidParameters p = this;
+            if ((uint)Solver > (uint)FluidSolverKind.PositionBased)
+                p.Solver = d.Solver;
+            if ((uint)Cohesion > (uint)FluidCohesionModel.Akinci)
+                p.Cohesion = d.Cohesion;
+            p.ParticleSpacing = Positive(ParticleSpacing, d.ParticleSpacing);
+            p.KernelRadiusRatio = math.isfinite(KernelRadiusRatio) ? math.clamp(KernelRadiusRatio, 1.5f, 4f) : d.KernelRadiusRatio;
+            p.RestDensity = Positive(RestDensity, d.RestDensity);
+            p.SpeedOfSound = Positive(SpeedOfSound, d.SpeedOfSound);
+            p.PressureIterations = math.clamp(PressureIterations, 1, MaxPressureIterations);
+            p.Viscosity = NonNegative(Viscosity);
+            p.ViscosityIterations = math.clamp(ViscosityIterations, 0, MaxViscosityIterations);
+            p.CohesionWeight = NonNegative(CohesionWeight);
+            p.SeparationWeight = NonNegative(SeparationWeight);
+            p.AlignmentRate = NonNegative(AlignmentRate);
+            p.SurfaceTension = NonNegative(SurfaceTension);
+            p.Gravity = math.all(math.isfinite(Gravity)) ? Gravity : float3.zero;
+            if (!math.all(math.isfinite(DomainMin)) || !math.all(math.isfinite(DomainMax)) || math.any(DomainMax - DomainMin < p.KernelRadius))
+            {
+                p.DomainMin = d.DomainMin;
+                p.DomainMax = d.DomainMax;
+            }
+            p.WallFriction = math.isnan(WallFriction) ? 0f : math.saturate(WallFriction);
+            p.CflNumber = math.isfinite(CflNumber) ? math.clamp(CflNumber, 0.05f, 1f) : d.CflNumber;
+            p.MaxSubsteps = math.clamp(MaxSubsteps, 1, SubstepLimit);
+            p.MaxSpeed = Positive(MaxSpeed, d.MaxSpeed);
+            p.MaxDensityRatio = math.isfinite(MaxDensityRatio) && MaxDensityRatio > 1f ? MaxDensityRatio : d.MaxDensityRatio;
+            return p;
+        }
+
+        static float Positive(float v, float fallback) => v > 0f && math.isfinite(v) ? v : fallback;
+        static float NonNegative(float v) => math.isfinite(v) ? math.max(0f, v) : 0f;
+    }
+}

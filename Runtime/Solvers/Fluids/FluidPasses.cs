@@ -1,0 +1,466 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Counters a pass adds up over its range (all order-independent: sums of integers and a maximum).</summary>
+    public struct FluidPassCounters
+    {
+        public int Killed, Expired, Invalid, SpeedClamped, OverCompressed, NeighbourOverflow, Contacts;
+        public float MaxDensityRatio;
+
+        /// <summary>Adds another range's counters (the order does not change the result).</summary>
+        public void Add(in FluidPassCounters o)
+        {
+            Killed += o.Killed;
+            Expired += o.Expired;
+            Invalid += o.Invalid;
+            SpeedClamped += o.SpeedClamped;
+            OverCompressed += o.OverCompressed;
+            NeighbourOverflow += o.NeighbourOverflow;
+            Contacts += o.Contacts;
+            MaxDensityRatio = math.max(MaxDensityRatio, o.MaxDensityRatio);
+        }
+    }
+
+    /// <summary>
+    /// The passes of a fluid substep, each over a range [start, end) of particle slots so a job can run it in
+    /// batches; a pass reads other particles only from arrays no pass of the same kind writes, so every batch split
+    /// gives the same bits. <see cref="FluidSolver"/> calls them in order for the single-threaded reference step.
+    /// </summary>
+    public static class FluidPasses
+    {
+        /// <summary>
+        /// Grid key of each slot in [start, end); a slot whose particle must go gets <see cref="FluidGrid.DeadKey"/>:
+        /// marked by a drain (negative lifetime), past its lifetime, or with a non-finite position or velocity.
+        /// </summary>
+        public static void Keys(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, ref FluidPassCounters counters)
+        {
+            int dead = c.Grid.DeadKey;
+            for (int i = start; i < end; i++)
+            {
+                float life = p.Lifetimes[i];
+                float3 x = p.Positions[i];
+                int key;
+                if (life < 0f || math.isnan(life)) { key = dead; counters.Killed++; }
+                else if (life > 0f && p.Ages[i] >= life) { key = dead; counters.Expired++; }
+                else if (!math.all(math.isfinite(x)) || !math.all(math.isfinite(p.Velocities[i]))) { key = dead; counters.Invalid++; }
+                else key = c.Grid.Key(x);
+                s.Keys[i] = key;
+            }
+        }
+
+        /// <summary>
+        /// Stable counting sort of slots [0, total) by key (Green 2008; Hoetzlein 2014): histogram with each slot's
+        /// rank in its cell, exclusive prefix sum into <see cref="FluidScratch.CellStart"/>, then
+        /// Order[CellStart[key] + rank] = slot. Dead slots land after every live one. Returns the live count.
+        /// Sequential (the histogram's ranks fix the order); the permutation is applied by <see cref="Permute{T}"/>.
+        /// </summary>
+        public static int Sort(in FluidGrid grid, FluidScratch s, int total)
+        {
+            int cells = grid.CellCount;
+            Span<int> start = s.CellStart.Slice(0, cells + 2);
+            start.Clear();
+            for (int i = 0; i < total; i++)
+            {
+                int k = s.Keys[i];
+                s.Ints[i] = start[k + 1]++;
+            }
+            for (int k = 1; k < cells + 2; k++)
+                start[k] += start[k - 1];
+            for (int i = 0; i < total; i++)
+                s.Order[start[s.Keys[i]] + s.Ints[i]] = i;
+            return start[cells];
+        }
+
+        /// <summary>temp[k] = data[Order[k]] for k in [start, end): the gather half of applying the sort.</summary>
+        public static void Gather<T>(ReadOnlySpan<T> data, Span<T> temp, ReadOnlySpan<int> order, int start, int end) where T : unmanaged
+        {
+            for (int k = start; k < end; k++)
+                temp[k] = data[order[k]];
+        }
+
+        /// <summary>Applies the sort's permutation to the first <paramref name="count"/> slots of <paramref name="data"/> through <paramref name="temp"/>.</summary>
+        public static void Permute<T>(Span<T> data, Span<T> temp, ReadOnlySpan<int> order, int count) where T : unmanaged
+        {
+            Gather<T>(data, temp, order, 0, count);
+            temp.Slice(0, count).CopyTo(data);
+        }
+
+        /// <summary>
+        /// Density ρᵢ = Σⱼ m·W_poly6(|xᵢ − xⱼ|) + ρ₀·Σ_walls Φ(d) (Müller 2003, eq. 3, walls in <see cref="FluidBoundary"/>)
+        /// and the neighbour list of each slot. Weakly compressible: the Tait pressure (Becker &amp; Teschner 2007,
+        /// eq. 6) p = B·((ρ/ρ₀)^γ − 1) of the density clamped to at least ρ₀ (no negative pressure at the free
+        /// surface, where the kernel lacks neighbours; SPlisHSPlasH clamps the same way), stored as p/ρ².
+        /// </summary>
+        public static void Density(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            int start, int end, ref FluidPassCounters counters)
+        {
+            SphKernels k = c.Kernels;
+            float m = c.Mass, rho0 = c.Parameters.RestDensity;
+            bool tait = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
+            float maxRatio = c.Parameters.MaxDensityRatio;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                NeighbourRows rows = NeighbourRows.Find(c.Grid, s.CellStart, xi);
+                int listStart = i * cap, found = 0;
+                float sum = 0f;
+                for (int r = 0; r < rows.Count; r++)
+                for (int j = rows.Begin(r); j < rows.End(r); j++)
+                {
+                    float r2 = math.lengthsq(xi - p.Positions[j]);
+                    if (!(r2 < k.H2))
+                        continue;
+                    sum += k.Poly6(r2);
+                    if (j == i)
+                        continue;
+                    if (found < cap)
+                        s.Neighbours[listStart + found++] = j;
+                    else
+                        counters.NeighbourOverflow++;
+                }
+                s.NeighbourCounts[i] = found;
+                FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
+                float rho = m * sum + rho0 * wall;
+                s.Densities[i] = rho;
+                float ratio = rho / rho0;
+                counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
+                if (ratio > maxRatio)
+                    counters.OverCompressed++;
+                if (tait)
+                {
+                    float rc = math.max(rho, rho0);
+                    float q = rc / rho0;
+                    float q2 = q * q;
+                    float pressure = c.TaitStiffness * (q2 * q2 * q2 * q - 1f);
+                    s.Pressures[i] = pressure / (rc * rc);
+                }
+            }
+        }
+
+        /// <summary>Akinci et al. 2013 surface normals nᵢ = h·Σⱼ (m/ρⱼ)·∇W(xᵢ − xⱼ) (eq. 4) into <see cref="FluidScratch.VectorsB"/>.</summary>
+        public static void SurfaceNormals(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end)
+        {
+            SphKernels k = c.Kernels;
+            float m = c.Mass;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                float3 n = float3.zero;
+                int count = s.NeighbourCounts[i];
+                for (int a = 0; a < count; a++)
+                {
+                    int j = s.Neighbours[i * cap + a];
+                    float3 rij = xi - p.Positions[j];
+                    n += (m / s.Densities[j]) * k.SpikyGradientScale(math.length(rij)) * rij;
+                }
+                s.VectorsB[i] = k.H * n;
+            }
+        }
+
+        /// <summary>
+        /// Accelerations and the velocity update vᵢ += h·aᵢ. Weakly compressible adds gravity, the symmetric pressure
+        /// term −Σⱼ m·(pᵢ/ρᵢ² + pⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992)
+        /// and the walls' ρ₀·(pᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
+        /// <see cref="FluidParameters.Cohesion"/>. Reads only positions, densities and pressures, so it may write
+        /// velocities in place. Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
+        /// </summary>
+        public static void Forces(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            int start, int end, float h, bool pressureAndGravity)
+        {
+            SphKernels k = c.Kernels;
+            FluidParameters prm = c.Parameters;
+            float m = c.Mass, rho0 = prm.RestDensity;
+            bool flocking = prm.Cohesion == FluidCohesionModel.Flocking && (prm.CohesionWeight > 0f || prm.SeparationWeight > 0f);
+            bool akinci = prm.Cohesion == FluidCohesionModel.Akinci && prm.SurfaceTension > 0f;
+            float spacing = prm.ParticleSpacing;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                float3 a = float3.zero;
+                int count = s.NeighbourCounts[i];
+                int list = i * cap;
+                if (pressureAndGravity)
+                {
+                    float pi = s.Pressures[i];
+                    float3 sum = float3.zero;
+                    for (int n = 0; n < count; n++)
+                    {
+                        int j = s.Neighbours[list + n];
+                        float3 rij = xi - p.Positions[j];
+                        float r = math.length(rij);
+                        float scale = -m * (pi + s.Pressures[j]);
+                        if (r > 1e-6f * k.H)
+                            sum += scale * k.SpikyGradientScale(r) * rij;
+                        else
+                            // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
+                            sum += scale * k.SpikyGradientCoefficient * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
+                    }
+                    FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
+                    a += prm.Gravity + sum + rho0 * s.Pressures[i] * push;
+                }
+                if (flocking)
+                {
+                    // Flocking: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.
+                    float3 centroid = float3.zero, separation = float3.zero;
+                    float weight = 0f;
+                    for (int n = 0; n < count; n++)
+                    {
+                        float3 xj = p.Positions[s.Neighbours[list + n]];
+                        float3 rij = xi - xj;
+                        float r2 = math.lengthsq(rij);
+                        float w = k.Poly6(r2);
+                        centroid += w * xj;
+                        weight += w;
+                        float r = math.sqrt(r2);
+                        if (r < spacing && r > 0f)
+                            separation += (spacing - r) / r * rij;
+                    }
+                    if (weight > 0f)
+                        a += prm.CohesionWeight * (centroid / weight - xi);
+                    a += prm.SeparationWeight * separation;
+                }
+                if (akinci)
+                {
+                    // Akinci et al. 2013, eqs. 1–5: aᵢ = −γ·Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ).
+                    float3 ni = s.VectorsB[i];
+                    float rhoi = s.Densities[i];
+                    float3 sum = float3.zero;
+                    for (int n = 0; n < count; n++)
+                    {
+                        int j = s.Neighbours[list + n];
+                        float3 rij = xi - p.Positions[j];
+                        float r = math.length(rij);
+                        float kij = 2f * rho0 / (rhoi + s.Densities[j]);
+                        float3 cohesion = r > 0f ? m * k.Cohesion(r) / r * rij : float3.zero;
+                        sum += kij * (cohesion + (ni - s.VectorsB[j]));
+                    }
+                    a -= prm.SurfaceTension * sum;
+                }
+                p.Velocities[i] += h * a;
+            }
+        }
+
+        /// <summary>A unit vector fixed by an unordered pair of ids, negated when the ids swap (so coincident pairs separate with zero net momentum).</summary>
+        public static float3 CoincidentDirection(int idI, int idJ)
+        {
+            int lo = math.min(idI, idJ), hi = math.max(idI, idJ);
+            uint hash = (uint)lo * 0x9E3779B1u ^ ((uint)hi + 0x7F4A7C15u) * 0x85EBCA77u;
+            hash ^= hash >> 15;
+            hash *= 0xC2B2AE3Du;
+            hash ^= hash >> 13;
+            // Spherical Fibonacci-like point from the hash: z in [−1, 1], angle in [0, 2π).
+            float z = (hash & 0xFFFF) / 32767.5f - 1f;
+            float phi = (hash >> 16) * (2f * math.PI / 65536f);
+            float rxy = math.sqrt(math.max(0f, 1f - z * z));
+            float3 d = new float3(rxy * math.cos(phi), rxy * math.sin(phi), z);
+            return idI <= idJ ? d : -d;
+        }
+
+        /// <summary>
+        /// One Jacobi iteration of implicit viscosity (backward Euler of Müller 2003's viscosity term, eq. 14):
+        /// v⁽ᵏ⁺¹⁾ᵢ = (v⁰ᵢ + hν·Σⱼ wᵢⱼ·v⁽ᵏ⁾ⱼ) / (1 + hν·Σⱼ wᵢⱼ), wᵢⱼ = m·2/(ρᵢ + ρⱼ)·∇²W_visc(rᵢⱼ) ≥ 0. Each iterate is a
+        /// weighted average of v⁰ and neighbours, so it is bounded for any h·ν; the symmetric weight conserves momentum
+        /// at convergence. v⁰ is <see cref="FluidParticles.Velocities"/>.
+        /// </summary>
+        public static void ViscosityIteration(in FluidConstants c, FluidParticles p, FluidScratch s, ReadOnlySpan<float3> source,
+            Span<float3> destination, int start, int end, float h)
+        {
+            SphKernels k = c.Kernels;
+            float hnu = h * c.Parameters.Viscosity, m = c.Mass;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                float rhoi = s.Densities[i];
+                float3 sum = float3.zero;
+                float weight = 0f;
+                int count = s.NeighbourCounts[i];
+                for (int n = 0; n < count; n++)
+                {
+                    int j = s.Neighbours[i * cap + n];
+                    float w = m * 2f / (rhoi + s.Densities[j]) * k.ViscosityLaplacian(math.length(xi - p.Positions[j]));
+                    sum += w * source[j];
+                    weight += w;
+                }
+                destination[i] = (p.Velocities[i] + hnu * sum) / (1f + hnu * weight);
+            }
+        }
+
+        /// <summary>
+        /// Flocking alignment (XSPH, Monaghan 1989) as a rate: vᵢ relaxes toward v̄ᵢ = Σⱼ (m/ρⱼ)Wᵢⱼvⱼ / Σⱼ (m/ρⱼ)Wᵢⱼ by
+        /// the factor 1 − e^(−rate·h), so the same rate means the same smoothing per second at any substep.
+        /// </summary>
+        public static void Alignment(in FluidConstants c, FluidParticles p, FluidScratch s, Span<float3> destination, int start, int end, float h)
+        {
+            SphKernels k = c.Kernels;
+            float blend = 1f - math.exp(-c.Parameters.AlignmentRate * h);
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                float3 sum = float3.zero;
+                float weight = 0f;
+                int count = s.NeighbourCounts[i];
+                for (int n = 0; n < count; n++)
+                {
+                    int j = s.Neighbours[i * cap + n];
+                    float w = k.Poly6(math.lengthsq(xi - p.Positions[j])) / s.Densities[j];
+                    sum += w * p.Velocities[j];
+                    weight += w;
+                }
+                float3 vi = p.Velocities[i];
+                destination[i] = weight > 0f ? vi + blend * (sum / weight - vi) : vi;
+            }
+        }
+
+        /// <summary>
+        /// Speed bound (counted), then xᵢ += h·vᵢ with the start position kept in <see cref="FluidScratch.Previous"/>,
+        /// and the domain box. A velocity that is not finite marks the particle invalid (position NaN, velocity zero)
+        /// so that no neighbour reads it and the next sort removes it.
+        /// </summary>
+        public static void Advect(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, float h, ref FluidPassCounters counters)
+        {
+            float maxSpeed = c.Parameters.MaxSpeed;
+            for (int i = start; i < end; i++)
+            {
+                float3 v = p.Velocities[i];
+                float3 x = p.Positions[i];
+                s.Previous[i] = x;
+                if (!math.all(math.isfinite(v)))
+                {
+                    p.Velocities[i] = float3.zero;
+                    p.Positions[i] = new float3(float.NaN);
+                    continue;
+                }
+                float speed2 = math.lengthsq(v);
+                if (speed2 > maxSpeed * maxSpeed)
+                {
+                    v *= maxSpeed / math.sqrt(speed2);
+                    counters.SpeedClamped++;
+                }
+                x += h * v;
+                FluidBoundary.ClampToDomain(c, ref x, ref v);
+                p.Positions[i] = x;
+                p.Velocities[i] = v;
+            }
+        }
+
+        /// <summary>
+        /// Position-based: λᵢ = −Cᵢ / (Σₖ |∇ₖCᵢ|² + ε) with Cᵢ = ρᵢ/ρ₀ − 1 (Macklin &amp; Müller 2013, eqs. 1–11), the wall
+        /// term included; Cᵢ is clamped at 0 so the free surface is never pulled together (the density clamp of the
+        /// weakly compressible path). Reads <see cref="FluidScratch.Densities"/> from <see cref="Density"/>.
+        /// </summary>
+        public static void Lambda(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int start, int end)
+        {
+            SphKernels k = c.Kernels;
+            float invRho0 = 1f / c.Parameters.RestDensity;
+            float mOverRho0 = c.Mass * invRho0;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float constraint = s.Densities[i] * invRho0 - 1f;
+                if (!(constraint > 0f))
+                {
+                    s.Pressures[i] = 0f;
+                    continue;
+                }
+                float3 xi = p.Positions[i];
+                FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
+                float3 gradI = -push;
+                float sumSq = 0f;
+                int count = s.NeighbourCounts[i];
+                for (int n = 0; n < count; n++)
+                {
+                    float3 rij = xi - p.Positions[s.Neighbours[i * cap + n]];
+                    float3 g = mOverRho0 * k.SpikyGradientScale(math.length(rij)) * rij;
+                    gradI += g;
+                    sumSq += math.lengthsq(g);
+                }
+                s.Pressures[i] = -constraint / (sumSq + math.lengthsq(gradI) + c.Relaxation);
+            }
+        }
+
+        /// <summary>Position-based: Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eq. 12) into <see cref="FluidScratch.VectorsA"/>.</summary>
+        public static void Correction(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int start, int end)
+        {
+            SphKernels k = c.Kernels;
+            float mOverRho0 = c.Mass / c.Parameters.RestDensity;
+            const int cap = FluidScratch.MaxNeighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                float li = s.Pressures[i];
+                float3 dx = float3.zero;
+                int count = s.NeighbourCounts[i];
+                for (int n = 0; n < count; n++)
+                {
+                    int j = s.Neighbours[i * cap + n];
+                    float lij = li + s.Pressures[j];
+                    if (lij == 0f)
+                        continue;
+                    float3 rij = xi - p.Positions[j];
+                    float r = math.length(rij);
+                    if (r > 1e-6f * k.H)
+                        dx += lij * k.SpikyGradientScale(r) * rij;
+                    else
+                        dx += lij * k.SpikyGradientCoefficient * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
+                }
+                dx *= mOverRho0;
+                if (li != 0f)
+                {
+                    FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
+                    dx -= li * push;
+                }
+                s.VectorsA[i] = dx;
+            }
+        }
+
+        /// <summary>Position-based: xᵢ += Δxᵢ, kept in the domain box.</summary>
+        public static void ApplyCorrection(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end)
+        {
+            for (int i = start; i < end; i++)
+            {
+                float3 x = p.Positions[i] + s.VectorsA[i];
+                float3 v = p.Velocities[i];
+                FluidBoundary.ClampToDomain(c, ref x, ref v);
+                p.Positions[i] = x;
+            }
+        }
+
+        /// <summary>Position-based: vᵢ = (xᵢ − x⁰ᵢ)/h, the velocity the constraint solve implies (eq. after Algorithm 1, line 21).</summary>
+        public static void VelocityFromPositions(FluidParticles p, FluidScratch s, int start, int end, float h)
+        {
+            float invH = 1f / h;
+            for (int i = start; i < end; i++)
+                p.Velocities[i] = (p.Positions[i] - s.Previous[i]) * invH;
+        }
+
+        /// <summary>Position-based: v += h·g, x⁰ = x, x += h·v, kept in the domain box.</summary>
+        public static void Predict(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, float h, ref FluidPassCounters counters)
+        {
+            float3 g = c.Parameters.Gravity;
+            float maxSpeed = c.Parameters.MaxSpeed;
+            for (int i = start; i < end; i++)
+            {
+                float3 x = p.Positions[i];
+                float3 v = p.Velocities[i] + h * g;
+                s.Previous[i] = x;
+                float speed2 = math.lengthsq(v);
+                if (speed2 > maxSpeed * maxSpeed)
+                {
+                    v *= maxSpeed / math.sqrt(speed2);
+                    counters.SpeedClamped++;
+                }
+                x += h * v;
+                FluidBoundary.ClampToDomain(c, ref x, ref v);
+                p.Positions[i] = x;
+                p.Velocities[i] = v;
+            }
+        }
+    }
+}
