@@ -14,8 +14,10 @@ namespace SoftBodyDynamics.Solvers
     public static class FluidBoundary
     {
         /// <summary>
-        /// Sums over the walls within h of <paramref name="x"/>: <paramref name="densityFraction"/> = Σ Φ(d) and
-        /// <paramref name="push"/> = Σ G(d)·n with n the unit normal out of the wall (1/m).
+        /// The walls within h of <paramref name="x"/>: <paramref name="densityFraction"/> = 1 − Πₖ(1 − κΦ(dₖ)), the
+        /// kernel's share outside the fluid (exact for the octant of a box corner, where a plain sum would count the
+        /// corner three times), and <paramref name="push"/> = Σ κG(d)·n with n the unit normal out of the wall (1/m).
+        /// κ is <see cref="FluidConstants.WallScale"/>.
         /// </summary>
         public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
             out float densityFraction, out float3 push)
@@ -23,7 +25,7 @@ namespace SoftBodyDynamics.Solvers
             SphKernels k = c.Kernels;
             float3 below = x - c.Parameters.DomainMin;
             float3 above = c.Parameters.DomainMax - x;
-            densityFraction = 0f;
+            float inside = 1f;
             push = float3.zero;
             for (int axis = 0; axis < 3; axis++)
             {
@@ -32,13 +34,13 @@ namespace SoftBodyDynamics.Solvers
                 float3 n = axis == 0 ? new float3(1f, 0f, 0f) : axis == 1 ? new float3(0f, 1f, 0f) : new float3(0f, 0f, 1f);
                 if (dBelow < k.H)
                 {
-                    densityFraction += k.WallDensityFraction(dBelow);
-                    push += k.WallGradientMagnitude(dBelow) * n;
+                    inside *= 1f - c.WallScale * k.WallDensityFraction(dBelow);
+                    push += c.WallScale * k.WallGradientMagnitude(dBelow) * n;
                 }
                 if (dAbove < k.H)
                 {
-                    densityFraction += k.WallDensityFraction(dAbove);
-                    push -= k.WallGradientMagnitude(dAbove) * n;
+                    inside *= 1f - c.WallScale * k.WallDensityFraction(dAbove);
+                    push -= c.WallScale * k.WallGradientMagnitude(dAbove) * n;
                 }
             }
             for (int w = 0; w < colliders.Length; w++)
@@ -47,9 +49,10 @@ namespace SoftBodyDynamics.Solvers
                 if (!ParticleCollision.Penetration(colliders[w], x, k.H, out float3 normal, out float depth))
                     continue;
                 float d = k.H - depth;
-                densityFraction += k.WallDensityFraction(d);
-                push += k.WallGradientMagnitude(d) * normal;
+                inside *= 1f - c.WallScale * k.WallDensityFraction(d);
+                push += c.WallScale * k.WallGradientMagnitude(d) * normal;
             }
+            densityFraction = 1f - inside;
         }
 
         /// <summary>

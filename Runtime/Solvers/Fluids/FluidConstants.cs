@@ -17,6 +17,12 @@ namespace SoftBodyDynamics.Solvers
         public readonly float TaitStiffness;
         /// <summary>Closest a particle centre comes to a wall or collider surface (m): half the spacing.</summary>
         public readonly float WallDistance;
+        /// <summary>
+        /// Scale κ on the continuous wall integrals so that a particle of a rest lattice half a spacing off a wall gets
+        /// exactly the density the missing lattice layers would give it (the continuum integral differs from the
+        /// lattice sum by a few per cent, which the stiff Tait law would turn into a wall pressure).
+        /// </summary>
+        public readonly float WallScale;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -29,12 +35,26 @@ namespace SoftBodyDynamics.Solvers
             Mass = Parameters.RestDensity / LatticeKernelSum(Kernels, Parameters.ParticleSpacing);
             TaitStiffness = Parameters.RestDensity * Parameters.SpeedOfSound * Parameters.SpeedOfSound / FluidParameters.TaitExponent;
             WallDistance = 0.5f * Parameters.ParticleSpacing;
+            float continuum = Kernels.WallDensityFraction(WallDistance);
+            WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
         }
 
         /// <summary>The grid of a fluid: its domain box in cells of the kernel radius.</summary>
         public static FluidGrid GridOf(in FluidParameters sanitized) =>
             new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius);
+
+        /// <summary>Σ W(|k|·Δx) over the lattice points k with k.z ≥ 1: what a particle of a lattice half a spacing off a wall lacks (1/m³).</summary>
+        public static float MissingLayersSum(in SphKernels kernels, float spacing)
+        {
+            int n = (int)math.ceil(kernels.H / spacing);
+            double sum = 0;
+            for (int z = 1; z <= n; z++)
+            for (int y = -n; y <= n; y++)
+            for (int x = -n; x <= n; x++)
+                sum += kernels.Poly6(spacing * spacing * (x * x + y * y + z * z));
+            return (float)sum;
+        }
 
         /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
         public static float LatticeKernelSum(in SphKernels kernels, float spacing)

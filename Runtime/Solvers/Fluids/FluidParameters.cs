@@ -22,6 +22,12 @@ namespace SoftBodyDynamics.Solvers
         /// <see cref="CflNumber"/>·h / (c₀ + v_max), so a stiffer fluid costs more substeps. Default 10 m/s.
         /// </summary>
         public float SpeedOfSound;
+        /// <summary>
+        /// Weakly compressible: Monaghan's artificial viscosity α (dimensionless, Becker &amp; Teschner 2007, eq. 11),
+        /// acting only between approaching particles. It damps the acoustic noise of the stiff equation of state; it
+        /// also adds an effective viscosity of about α·h·c₀/10 (m²/s). 0–1, default 0.05.
+        /// </summary>
+        public float ArtificialViscosity;
         /// <summary>Position-based: density-constraint iterations per substep (1–100). Default 4.</summary>
         public int PressureIterations;
         /// <summary>Kinematic viscosity ν (m²/s): water 1e-6, oil 1e-4, honey 5e-3. Integrated implicitly, so any value is stable.</summary>
@@ -75,6 +81,7 @@ namespace SoftBodyDynamics.Solvers
             KernelRadiusRatio = 2f,
             RestDensity = 1000f,
             SpeedOfSound = 10f,
+            ArtificialViscosity = 0.05f,
             PressureIterations = 4,
             Viscosity = 1e-6f,
             ViscosityIterations = 4,
@@ -106,6 +113,7 @@ namespace SoftBodyDynamics.Solvers
             p.KernelRadiusRatio = math.isfinite(KernelRadiusRatio) ? math.clamp(KernelRadiusRatio, 1.5f, 4f) : d.KernelRadiusRatio;
             p.RestDensity = Positive(RestDensity, d.RestDensity);
             p.SpeedOfSound = Positive(SpeedOfSound, d.SpeedOfSound);
+            p.ArtificialViscosity = math.isfinite(ArtificialViscosity) ? math.clamp(ArtificialViscosity, 0f, 1f) : d.ArtificialViscosity;
             p.PressureIterations = math.clamp(PressureIterations, 1, MaxPressureIterations);
             p.Viscosity = NonNegative(Viscosity);
             p.ViscosityIterations = math.clamp(ViscosityIterations, 0, MaxViscosityIterations);

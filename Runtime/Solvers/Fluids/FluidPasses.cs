@@ -164,13 +164,16 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Accelerations and the velocity update vᵢ += h·aᵢ. Weakly compressible adds gravity, the symmetric pressure
         /// term −Σⱼ m·(pᵢ/ρᵢ² + pⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992)
-        /// and the walls' ρ₀·(pᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
-        /// <see cref="FluidParameters.Cohesion"/>. Reads only positions, densities and pressures, so it may write
-        /// velocities in place. Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
+        /// with Monaghan's artificial viscosity Πᵢⱼ (Becker &amp; Teschner 2007, eq. 11) and the walls'
+        /// ρ₀·(pᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
+        /// <see cref="FluidParameters.Cohesion"/>. Writes vᵢ + h·aᵢ to <paramref name="destination"/> (neighbours'
+        /// velocities are read). Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
         /// </summary>
         public static void Forces(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
-            int start, int end, float h, bool pressureAndGravity)
+            Span<float3> destination, int start, int end, float h, bool pressureAndGravity)
         {
+            float alphaCh = 2f * c.Parameters.ArtificialViscosity * c.Parameters.SpeedOfSound * c.Kernels.H;
+            float eta2 = 0.01f * c.Kernels.H2;
             SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
             float m = c.Mass, rho0 = prm.RestDensity;
@@ -187,6 +190,8 @@ namespace SoftBodyDynamics.Solvers
                 if (pressureAndGravity)
                 {
                     float pi = s.Pressures[i];
+                    float rhoi = s.Densities[i];
+                    float3 vi = p.Velocities[i];
                     float3 sum = float3.zero;
                     for (int n = 0; n < count; n++)
                     {
@@ -194,6 +199,10 @@ namespace SoftBodyDynamics.Solvers
                         float3 rij = xi - p.Positions[j];
                         float r = math.length(rij);
                         float scale = -m * (pi + s.Pressures[j]);
+                        // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
+                        float approach = math.dot(vi - p.Velocities[j], rij);
+                        if (approach < 0f)
+                            scale += m * alphaCh / (rhoi + s.Densities[j]) * approach / (r * r + eta2);
                         if (r > 1e-6f * k.H)
                             sum += scale * k.SpikyGradientScale(r) * rij;
                         else
@@ -241,7 +250,7 @@ namespace SoftBodyDynamics.Solvers
                     }
                     a -= prm.SurfaceTension * sum;
                 }
-                p.Velocities[i] += h * a;
+                destination[i] = p.Velocities[i] + h * a;
             }
         }
 

@@ -115,7 +115,8 @@ namespace SoftBodyDynamics.Solvers
             FluidPasses.Density(c, colliders, p, s, 0, count, ref counters);
             if (c.Parameters.Cohesion == FluidCohesionModel.Akinci && c.Parameters.SurfaceTension > 0f)
                 FluidPasses.SurfaceNormals(c, p, s, 0, count);
-            FluidPasses.Forces(c, colliders, p, s, 0, count, h, true);
+            FluidPasses.Forces(c, colliders, p, s, s.VectorsA, 0, count, h, true);
+            s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
             SmoothVelocities(c, p, s, count, h);
             FluidPasses.Advect(c, p, s, 0, count, h, ref counters);
             Collide(c, colliders, p, s, count, h, ref counters);
@@ -141,7 +142,8 @@ namespace SoftBodyDynamics.Solvers
             {
                 if (c.Parameters.Cohesion == FluidCohesionModel.Akinci)
                     FluidPasses.SurfaceNormals(c, p, s, 0, count);
-                FluidPasses.Forces(c, colliders, p, s, 0, count, h, false);
+                FluidPasses.Forces(c, colliders, p, s, s.VectorsA, 0, count, h, false);
+                s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
             }
             SmoothVelocities(c, p, s, count, h);
             Collide(c, colliders, p, s, count, h, ref counters);
