@@ -27,6 +27,13 @@ namespace SoftBodyDynamics.Solvers
             float3 above = c.Parameters.DomainMax - x;
             float inside = 1f;
             push = float3.zero;
+            float nearest = math.min(math.cmin(below), math.cmin(above));
+            if (nearest >= k.H && colliders.Length == 0)
+            {
+                // Interior particle, the common case: no wall within a kernel.
+                densityFraction = 0f;
+                return;
+            }
             for (int axis = 0; axis < 3; axis++)
             {
                 float dBelow = axis == 0 ? below.x : axis == 1 ? below.y : below.z;

@@ -3,29 +3,33 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// The uniform grid over a fluid's domain box, cell size = kernel radius h, so every neighbour of a particle lies
-    /// in the 3×3×3 cells around its own. Cells are numbered x fastest: key = x + Nx·(y + Ny·z); a particle outside
+    /// The uniform grid over a fluid's domain box, cell size = half the kernel radius h, so every neighbour of a
+    /// particle lies in the 5×5×5 cells around its own (<see cref="SearchRange"/> = 2). Cells are numbered x fastest: key = x + Nx·(y + Ny·z); a particle outside
     /// the box counts in the nearest boundary cell. Key <see cref="DeadKey"/> marks a particle to drop: the counting
     /// sort puts it after every live one. Because x is fastest, the three cells of a row (x − 1 … x + 1) are one
-    /// contiguous range of the sorted particles, so a neighbour search reads 9 ranges.
+    /// contiguous range of the sorted particles, so a neighbour search reads 25 ranges (<see cref="NeighbourRows"/>).
     /// </summary>
     public readonly struct FluidGrid
     {
         /// <summary>Lower corner of the grid (m).</summary>
         public readonly float3 Origin;
-        /// <summary>Cell edge (m), the kernel radius.</summary>
+        /// <summary>Cell edge (m), at least h / <see cref="SearchRange"/>.</summary>
         public readonly float CellSize;
         /// <summary>1 / <see cref="CellSize"/> (1/m).</summary>
         public readonly float InverseCellSize;
         /// <summary>Cells along x, y, z (each ≥ 1).</summary>
         public readonly int3 Dimensions;
 
+        /// <summary>Cells searched on each side of a particle's own: the cell edge is h / SearchRange.</summary>
+        public const int SearchRange = 2;
+
         /// <summary>Most cells a grid may have (the cell-start table is 4 bytes per cell).</summary>
         public const int MaxCells = 1 << 24;
 
-        /// <summary>The grid over [<paramref name="min"/>, <paramref name="max"/>] with cells of <paramref name="cellSize"/> (clamped to <see cref="MaxCells"/> by coarsening).</summary>
-        public FluidGrid(float3 min, float3 max, float cellSize)
+        /// <summary>The grid over [<paramref name="min"/>, <paramref name="max"/>] for kernel radius <paramref name="kernelRadius"/>: cells of h / <see cref="SearchRange"/>, coarsened while the grid has more than <see cref="MaxCells"/>.</summary>
+        public FluidGrid(float3 min, float3 max, float kernelRadius)
         {
+            float cellSize = kernelRadius / SearchRange;
             float3 extent = math.max(max - min, new float3(cellSize));
             int3 dims = CellsAcross(extent, cellSize);
             // A domain too large for the table gets coarser cells (still correct: a cell larger than h only adds candidates).

@@ -97,33 +97,41 @@ namespace SoftBodyDynamics.Solvers
             int start, int end, ref FluidPassCounters counters)
         {
             SphKernels k = c.Kernels;
-            float m = c.Mass, rho0 = c.Parameters.RestDensity;
+            float m = c.Mass, rho0 = c.Parameters.RestDensity, h2 = k.H2;
             bool tait = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
             float maxRatio = c.Parameters.MaxDensityRatio;
             const int cap = FluidScratch.MaxNeighbours;
+            ReadOnlySpan<float3> x = p.Positions;
+            ReadOnlySpan<int> cellStart = s.CellStart;
+            Span<int> neighbours = s.Neighbours;
             for (int i = start; i < end; i++)
             {
-                float3 xi = p.Positions[i];
-                NeighbourRows rows = NeighbourRows.Find(c.Grid, s.CellStart, xi);
+                float3 xi = x[i];
+                NeighbourRows rows = NeighbourRows.Find(c.Grid, cellStart, xi);
                 int listStart = i * cap, found = 0;
+                // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once.
                 float sum = 0f;
                 for (int r = 0; r < rows.Count; r++)
-                for (int j = rows.Begin(r); j < rows.End(r); j++)
                 {
-                    float r2 = math.lengthsq(xi - p.Positions[j]);
-                    if (!(r2 < k.H2))
-                        continue;
-                    sum += k.Poly6(r2);
-                    if (j == i)
-                        continue;
-                    if (found < cap)
-                        s.Neighbours[listStart + found++] = j;
-                    else
-                        counters.NeighbourOverflow++;
+                    int rowEnd = rows.End(r);
+                    for (int j = rows.Begin(r); j < rowEnd; j++)
+                    {
+                        float3 d = xi - x[j];
+                        float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
+                        if (!(q > 0f))
+                            continue;
+                        sum += q * q * q;
+                        if (j == i)
+                            continue;
+                        if (found < cap)
+                            neighbours[listStart + found++] = j;
+                        else
+                            counters.NeighbourOverflow++;
+                    }
                 }
                 s.NeighbourCounts[i] = found;
                 FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
-                float rho = m * sum + rho0 * wall;
+                float rho = m * k.Poly6Coefficient * sum + rho0 * wall;
                 s.Densities[i] = rho;
                 float ratio = rho / rho0;
                 counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
@@ -132,11 +140,47 @@ namespace SoftBodyDynamics.Solvers
                 if (tait)
                 {
                     float rc = math.max(rho, rho0);
-                    float q = rc / rho0;
-                    float q2 = q * q;
-                    float pressure = c.TaitStiffness * (q2 * q2 * q2 * q - 1f);
+                    float qr = rc / rho0;
+                    float q2 = qr * qr;
+                    float pressure = c.TaitStiffness * (q2 * q2 * q2 * qr - 1f);
                     s.Pressures[i] = pressure / (rc * rc);
                 }
+            }
+        }
+
+        /// <summary>
+        /// Density from the neighbour lists of the last <see cref="Density"/> pass, for positions that moved a little
+        /// since (the position-based iterations keep their lists, Macklin &amp; Müller 2013, Algorithm 1). No pressure.
+        /// </summary>
+        public static void DensityFromNeighbours(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p,
+            FluidScratch s, int start, int end, ref FluidPassCounters counters)
+        {
+            SphKernels k = c.Kernels;
+            float m = c.Mass, rho0 = c.Parameters.RestDensity, h2 = k.H2;
+            float maxRatio = c.Parameters.MaxDensityRatio;
+            const int cap = FluidScratch.MaxNeighbours;
+            ReadOnlySpan<float3> x = p.Positions;
+            ReadOnlySpan<int> neighbours = s.Neighbours;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = x[i];
+                // The particle itself contributes W(0) = coefficient·h⁶.
+                float sum = h2 * h2 * h2;
+                ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
+                for (int n = 0; n < list.Length; n++)
+                {
+                    float3 d = xi - x[list[n]];
+                    float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
+                    if (q > 0f)
+                        sum += q * q * q;
+                }
+                FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
+                float rho = m * k.Poly6Coefficient * sum + rho0 * wall;
+                s.Densities[i] = rho;
+                float ratio = rho / rho0;
+                counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
+                if (ratio > maxRatio)
+                    counters.OverCompressed++;
             }
         }
 
@@ -174,6 +218,10 @@ namespace SoftBodyDynamics.Solvers
         {
             float alphaCh = 2f * c.Parameters.ArtificialViscosity * c.Parameters.SpeedOfSound * c.Kernels.H;
             float eta2 = 0.01f * c.Kernels.H2;
+            float minDistance = 1e-6f * c.Kernels.H;
+            ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
+            ReadOnlySpan<float> pressures = s.Pressures, densities = s.Densities;
+            ReadOnlySpan<int> neighbours = s.Neighbours;
             SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
             float m = c.Mass, rho0 = prm.RestDensity;
@@ -191,24 +239,31 @@ namespace SoftBodyDynamics.Solvers
                 {
                     float pi = s.Pressures[i];
                     float rhoi = s.Densities[i];
-                    float3 vi = p.Velocities[i];
+                    float3 vi = velocities[i];
                     float3 sum = float3.zero;
-                    for (int n = 0; n < count; n++)
+                    ReadOnlySpan<int> list_ = neighbours.Slice(list, count);
+                    for (int n = 0; n < list_.Length; n++)
                     {
-                        int j = s.Neighbours[list + n];
-                        float3 rij = xi - p.Positions[j];
-                        float r = math.length(rij);
-                        float scale = -m * (pi + s.Pressures[j]);
+                        int j = list_[n];
+                        float3 rij = xi - x[j];
+                        float r2 = math.dot(rij, rij);
+                        float r = math.sqrt(r2);
+                        float scale = pi + pressures[j];
                         // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
-                        float approach = math.dot(vi - p.Velocities[j], rij);
+                        float approach = math.dot(vi - velocities[j], rij);
                         if (approach < 0f)
-                            scale += m * alphaCh / (rhoi + s.Densities[j]) * approach / (r * r + eta2);
-                        if (r > 1e-6f * k.H)
-                            sum += scale * k.SpikyGradientScale(r) * rij;
+                            scale -= alphaCh / (rhoi + densities[j]) * approach / (r2 + eta2);
+                        if (r > minDistance)
+                        {
+                            // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
+                            float hr = k.H - r;
+                            sum += (scale * hr * hr / r) * rij;
+                        }
                         else
                             // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
-                            sum += scale * k.SpikyGradientCoefficient * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
+                            sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
                     }
+                    sum *= -m * k.SpikyGradientCoefficient;
                     FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
                     a += prm.Gravity + sum + rho0 * s.Pressures[i] * push;
                 }
@@ -280,23 +335,30 @@ namespace SoftBodyDynamics.Solvers
             Span<float3> destination, int start, int end, float h)
         {
             SphKernels k = c.Kernels;
-            float hnu = h * c.Parameters.Viscosity, m = c.Mass;
+            float hnu = h * c.Parameters.Viscosity;
+            // wᵢⱼ = m·2/(ρᵢ + ρⱼ)·45/(πh⁶)·(h − r): the constant factor is folded into hν.
+            float hnuScaled = hnu * 2f * c.Mass * k.ViscosityLaplacianCoefficient;
             const int cap = FluidScratch.MaxNeighbours;
+            ReadOnlySpan<float3> x = p.Positions, v0 = p.Velocities;
+            ReadOnlySpan<float> densities = s.Densities;
+            ReadOnlySpan<int> neighbours = s.Neighbours;
+            float hk = k.H;
             for (int i = start; i < end; i++)
             {
-                float3 xi = p.Positions[i];
-                float rhoi = s.Densities[i];
+                float3 xi = x[i];
+                float rhoi = densities[i];
                 float3 sum = float3.zero;
                 float weight = 0f;
-                int count = s.NeighbourCounts[i];
-                for (int n = 0; n < count; n++)
+                ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
+                for (int n = 0; n < list.Length; n++)
                 {
-                    int j = s.Neighbours[i * cap + n];
-                    float w = m * 2f / (rhoi + s.Densities[j]) * k.ViscosityLaplacian(math.length(xi - p.Positions[j]));
+                    int j = list[n];
+                    float r = math.length(xi - x[j]);
+                    float w = math.max(hk - r, 0f) / (rhoi + densities[j]);
                     sum += w * source[j];
                     weight += w;
                 }
-                destination[i] = (p.Velocities[i] + hnu * sum) / (1f + hnu * weight);
+                destination[i] = (v0[i] + hnuScaled * sum) / (1f + hnuScaled * weight);
             }
         }
 

@@ -131,7 +131,10 @@ namespace SoftBodyDynamics.Solvers
             for (int it = 0; it < c.Parameters.PressureIterations; it++)
             {
                 // The neighbour lists come from the first density pass; later ones refresh only the densities.
-                FluidPasses.Density(c, colliders, p, s, 0, count, ref counters);
+                if (it == 0)
+                    FluidPasses.Density(c, colliders, p, s, 0, count, ref counters);
+                else
+                    FluidPasses.DensityFromNeighbours(c, colliders, p, s, 0, count, ref counters);
                 FluidPasses.Lambda(c, colliders, p, s, 0, count);
                 FluidPasses.Correction(c, colliders, p, s, 0, count);
                 FluidPasses.ApplyCorrection(c, p, s, 0, count);

@@ -4,14 +4,18 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// The candidate neighbours of a point as at most 9 ranges of sorted particle slots: one per (y, z) row of the
-    /// 3×3×3 cells around it, each row's three cells being contiguous because keys run x fastest. Filled by
-    /// <see cref="Find"/>; iterate <c>for r &lt; Count: for j in [Begin(r), End(r))</c>.
+    /// The candidate neighbours of a point as at most 25 ranges of sorted particle slots: one per (y, z) row of the
+    /// 5×5×5 cells of size h/2 around it (every point within h of it lies in them), each row's five cells being
+    /// contiguous because keys run x fastest. Half-kernel cells scan (2.5h)³ instead of the (3h)³ of kernel-sized
+    /// cells, 42 % fewer candidates. Filled by <see cref="Find"/>; iterate <c>for r &lt; Count: for j in [Begin(r), End(r))</c>.
     /// </summary>
     public unsafe struct NeighbourRows
     {
-        fixed int m_Ranges[18];
-        /// <summary>Number of non-empty rows (0–9).</summary>
+        fixed int m_Ranges[2 * MaxRows];
+        /// <summary>Most rows: (2·<see cref="FluidGrid.SearchRange"/> + 1)².</summary>
+        public const int MaxRows = (2 * FluidGrid.SearchRange + 1) * (2 * FluidGrid.SearchRange + 1);
+
+        /// <summary>Number of non-empty rows (0–25).</summary>
         public int Count;
 
         /// <summary>First sorted slot of row <paramref name="row"/>.</summary>
@@ -32,9 +36,10 @@ namespace SoftBodyDynamics.Solvers
             var rows = new NeighbourRows();
             int3 c = grid.Cell(x);
             int3 d = grid.Dimensions;
-            int x0 = math.max(c.x - 1, 0), x1 = math.min(c.x + 1, d.x - 1);
-            int z0 = math.max(c.z - 1, 0), z1 = math.min(c.z + 1, d.z - 1);
-            int y0 = math.max(c.y - 1, 0), y1 = math.min(c.y + 1, d.y - 1);
+            const int R = FluidGrid.SearchRange;
+            int x0 = math.max(c.x - R, 0), x1 = math.min(c.x + R, d.x - 1);
+            int z0 = math.max(c.z - R, 0), z1 = math.min(c.z + R, d.z - 1);
+            int y0 = math.max(c.y - R, 0), y1 = math.min(c.y + R, d.y - 1);
             for (int z = z0; z <= z1; z++)
             for (int y = y0; y <= y1; y++)
             {
