@@ -250,13 +250,12 @@ namespace SoftBodyDynamics.Solvers
                         float r = math.sqrt(r2);
                         float scale = pi + pressures[j];
                         // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
-                        float approach = math.dot(vi - velocities[j], rij);
-                        if (approach < 0f)
-                            scale -= alphaCh / (rhoi + densities[j]) * approach / (r2 + eta2);
+                        float approach = math.min(math.dot(vi - velocities[j], rij), 0f);
+                        scale -= alphaCh / (rhoi + densities[j]) * approach / (r2 + eta2);
                         if (r > minDistance)
                         {
                             // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
-                            float hr = k.H - r;
+                            float hr = math.max(k.H - r, 0f);
                             sum += (scale * hr * hr / r) * rij;
                         }
                         else
@@ -299,6 +298,8 @@ namespace SoftBodyDynamics.Solvers
                         int j = s.Neighbours[list + n];
                         float3 rij = xi - p.Positions[j];
                         float r = math.length(rij);
+                        if (!(r < k.H))
+                            continue;
                         float kij = 2f * rho0 / (rhoi + s.Densities[j]);
                         float3 cohesion = r > 0f ? m * k.Cohesion(r) / r * rij : float3.zero;
                         sum += kij * (cohesion + (ni - s.VectorsB[j]));
