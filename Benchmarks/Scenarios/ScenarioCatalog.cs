@@ -19,6 +19,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodStudyStabilitySuite(),
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
+            new FluidAccuracySuite(),
+            new FluidThroughputSuite(),
         };
     }
 }

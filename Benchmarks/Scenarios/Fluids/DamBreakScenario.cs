@@ -1,0 +1,164 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Dam break of Martin &amp; Moyce 1952 (n² = 2): a water column a = 0.05715 m wide and 2a high against the left
+    /// wall of a tank 6a long and 3a high, dry bed, as a slab four particles deep between free-slip walls (the
+    /// experiment is two-dimensional). One Step is the whole run from release to T = 3.4, in frames of 1/500 s
+    /// (each split into CFL substeps); an item is one particle-substep. The front is the leading edge of the bulk
+    /// (<see cref="FluidScene.BulkFront"/>, particles with ≥ 4 neighbours), sampled every frame and interpolated at the
+    /// table's times.
+    /// </summary>
+    public sealed class DamBreakScenario : IScenario, IScenarioRepeatCap
+    {
+        /// <summary>Frame length (s) of the run: the front is sampled at this interval (ΔT ≈ 0.037).</summary>
+        public const float FrameSeconds = 1f / 500f;
+        /// <summary>Dimensionless end time of a run.</summary>
+        public const double EndT = 3.4;
+        const int k_Depth = 4;
+        const int k_MinNeighbours = 4;
+
+        readonly int m_CellsAcross;
+        readonly FluidParameters m_Parameters;
+        readonly string m_Setting;
+        FluidConstants m_Constants;
+        FluidBuffers m_Buffers;
+        float3[] m_InitialPositions;
+        int[] m_InitialIds;
+        int m_InitialCount;
+        double[] m_SampleT, m_SampleZ;
+        int m_Samples;
+        long m_Items;
+        double m_DensityErrorSum;
+        int m_DensitySamples;
+        int m_MaxSubsteps, m_Capped;
+
+        /// <summary>A dam break at a/<paramref name="cellsAcross"/> spacing with the solver settings of <paramref name="parameters"/> (spacing and domain are set here).</summary>
+        public DamBreakScenario(int cellsAcross, FluidParameters parameters, string setting)
+        {
+            m_CellsAcross = cellsAcross;
+            m_Parameters = parameters;
+            m_Setting = setting;
+        }
+
+        public string Name => "DamBreak";
+        public string Method => $"{SolverName(m_Parameters.Solver)} {m_Setting}, a/{m_CellsAcross}";
+        public int Size => m_InitialCount > 0 ? m_InitialCount : m_CellsAcross * 2 * m_CellsAcross * k_Depth;
+        public string SizeUnit => "particles";
+        public long ItemsPerStep => Math.Max(1, m_Items);
+        public int MaxRepeats => 3;
+
+        public static string SolverName(FluidSolverKind solver) => solver == FluidSolverKind.WeaklyCompressible ? "WCSPH" : "PBF";
+
+        /// <summary>Reference speed √(2g·2a) of the column (m/s): the speed of sound is a multiple of it.</summary>
+        public static float ReferenceSpeed => (float)Math.Sqrt(2 * 9.81 * 2 * MartinMoyce1952.ColumnWidth);
+
+        public void Setup()
+        {
+            float a = (float)MartinMoyce1952.ColumnWidth;
+            float dx = a / m_CellsAcross;
+            FluidParameters p = m_Parameters;
+            p.ParticleSpacing = dx;
+            p.DomainMin = float3.zero;
+            p.DomainMax = new float3(6f * a, 3f * a, k_Depth * dx);
+            p.Gravity = new float3(0f, -9.81f, 0f);
+            p.MaxSubsteps = FluidParameters.SubstepLimit;
+            m_Constants = new FluidConstants(p);
+            int count = FluidScene.BlockCount(float3.zero, new float3(a, 2f * a, k_Depth * dx), dx);
+            m_Buffers = new FluidBuffers(count, m_Constants.Grid);
+            m_InitialCount = FluidScene.FillBlock(m_Buffers, float3.zero, new float3(a, 2f * a, k_Depth * dx), dx);
+            m_InitialPositions = (float3[])m_Buffers.Positions.Clone();
+            m_InitialIds = (int[])m_Buffers.Ids.Clone();
+            int frames = (int)Math.Ceiling(EndT / MartinMoyce1952.DimensionlessTime(FrameSeconds)) + 2;
+            m_SampleT = new double[frames];
+            m_SampleZ = new double[frames];
+        }
+
+        void Reset()
+        {
+            FluidBuffers b = m_Buffers;
+            Array.Copy(m_InitialPositions, b.Positions, m_InitialCount);
+            Array.Copy(m_InitialIds, b.Ids, m_InitialCount);
+            Array.Clear(b.Velocities, 0, m_InitialCount);
+            Array.Clear(b.Ages, 0, m_InitialCount);
+            Array.Clear(b.Lifetimes, 0, m_InitialCount);
+            b.Status = new FluidStatus { Count = m_InitialCount, NextId = m_InitialCount, Spawned = m_InitialCount };
+        }
+
+        public void Step()
+        {
+            Reset();
+            FluidBuffers b = m_Buffers;
+            float a = (float)MartinMoyce1952.ColumnWidth;
+            m_Samples = 0;
+            m_Items = 0;
+            m_DensityErrorSum = 0;
+            m_DensitySamples = 0;
+            m_MaxSubsteps = 0;
+            m_Capped = 0;
+            m_SampleT[m_Samples] = 0;
+            m_SampleZ[m_Samples++] = 1;
+            double t = 0;
+            while (MartinMoyce1952.DimensionlessTime(t) < EndT && m_Samples < m_SampleT.Length)
+            {
+                FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, FrameSeconds, b.Particles, b.Scratch, ref b.Status);
+                t += FrameSeconds;
+                m_Items += (long)r.Substeps * r.Count;
+                m_MaxSubsteps = Math.Max(m_MaxSubsteps, r.Substeps);
+                if (r.SubstepsWanted > r.Substeps)
+                    m_Capped++;
+                m_SampleT[m_Samples] = MartinMoyce1952.DimensionlessTime(t);
+                m_SampleZ[m_Samples++] = FluidScene.BulkFront(b, m_Constants.Parameters.ParticleSpacing, k_MinNeighbours) / a;
+                double e = FluidScene.MeanBulkDensityError(b, m_Constants.Parameters.RestDensity, k_MinNeighbours);
+                if (!double.IsNaN(e))
+                {
+                    m_DensityErrorSum += e;
+                    m_DensitySamples++;
+                }
+            }
+        }
+
+        /// <summary>RMS of Z_sim(T + shift) − Z_data over the table's points.</summary>
+        public double FrontError(double shift)
+        {
+            double sum = 0;
+            for (int k = 0; k < MartinMoyce1952.T.Length; k++)
+            {
+                double z = FluidScene.Interpolate(m_SampleT, m_SampleZ, m_Samples, MartinMoyce1952.T[k] - shift);
+                double d = z - MartinMoyce1952.Z[k];
+                sum += d * d;
+            }
+            return Math.Sqrt(sum / MartinMoyce1952.T.Length);
+        }
+
+        public IReadOnlyList<Metric> Evaluate()
+        {
+            // The best shift in [0, 0.2] (the gate's opening time) on a 0.01 grid.
+            double best = double.PositiveInfinity, bestShift = 0;
+            for (int s = 0; s <= 20; s++)
+            {
+                double e = FrontError(0.01 * s);
+                if (e < best)
+                {
+                    best = e;
+                    bestShift = 0.01 * s;
+                }
+            }
+            return new[]
+            {
+                new Metric("front RMS error", FrontError(0), "Z"),
+                new Metric("front RMS error (shifted)", best, "Z"),
+                new Metric("shift", bestShift, "T"),
+                new Metric("density error", 100 * m_DensityErrorSum / Math.Max(1, m_DensitySamples), "%"),
+                new Metric("Z at T=3.33", FluidScene.Interpolate(m_SampleT, m_SampleZ, m_Samples, 3.33), "Z"),
+                new Metric("max substeps per frame", m_MaxSubsteps),
+                new Metric("capped frames", m_Capped),
+                new Metric("particles lost", m_InitialCount - m_Buffers.Status.Count),
+            };
+        }
+    }
+}

@@ -1,0 +1,79 @@
+using System;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>Building blocks of the fluid scenarios: lattice blocks, bulk front, density statistics.</summary>
+    public static class FluidScene
+    {
+        /// <summary>Fills the box [<paramref name="lo"/>, <paramref name="hi"/>) with a cubic lattice at the fluid's spacing (first point half a spacing in) and returns the count.</summary>
+        public static int FillBlock(FluidBuffers b, float3 lo, float3 hi, float spacing)
+        {
+            int n = b.Status.Count;
+            int nx = (int)math.floor((hi.x - lo.x) / spacing + 1e-3f);
+            int ny = (int)math.floor((hi.y - lo.y) / spacing + 1e-3f);
+            int nz = (int)math.floor((hi.z - lo.z) / spacing + 1e-3f);
+            for (int z = 0; z < nz; z++)
+            for (int y = 0; y < ny; y++)
+            for (int x = 0; x < nx && n < b.Capacity; x++)
+            {
+                b.Positions[n] = lo + (new float3(x, y, z) + 0.5f) * spacing;
+                b.Velocities[n] = float3.zero;
+                b.Ages[n] = 0f;
+                b.Lifetimes[n] = 0f;
+                b.Ids[n] = b.Status.NextId++;
+                n++;
+            }
+            b.Status.Spawned += n - b.Status.Count;
+            b.Status.Count = n;
+            return n;
+        }
+
+        /// <summary>Lattice points of a block (for sizing buffers).</summary>
+        public static int BlockCount(float3 lo, float3 hi, float spacing) =>
+            (int)math.floor((hi.x - lo.x) / spacing + 1e-3f) * (int)math.floor((hi.y - lo.y) / spacing + 1e-3f) * (int)math.floor((hi.z - lo.z) / spacing + 1e-3f);
+
+        /// <summary>
+        /// Leading edge (m) along +x of the bulk: the largest x among particles with at least
+        /// <paramref name="minNeighbours"/> neighbours in the last density pass, plus half a spacing (the edge of its
+        /// volume). Isolated splash droplets ahead of the front do not count.
+        /// </summary>
+        public static double BulkFront(FluidBuffers b, float spacing, int minNeighbours)
+        {
+            double front = double.NegativeInfinity;
+            for (int i = 0; i < b.Status.Count; i++)
+                if (b.NeighbourCounts[i] >= minNeighbours)
+                    front = Math.Max(front, b.Positions[i].x);
+            return front + 0.5 * spacing;
+        }
+
+        /// <summary>Mean |ρ/ρ₀ − 1| over particles with at least <paramref name="minNeighbours"/> neighbours (the last density pass).</summary>
+        public static double MeanBulkDensityError(FluidBuffers b, float restDensity, int minNeighbours)
+        {
+            double sum = 0;
+            int count = 0;
+            for (int i = 0; i < b.Status.Count; i++)
+            {
+                if (b.NeighbourCounts[i] < minNeighbours)
+                    continue;
+                sum += Math.Abs(b.Densities[i] / restDensity - 1.0);
+                count++;
+            }
+            return count > 0 ? sum / count : double.NaN;
+        }
+
+        /// <summary>Linear interpolation of the samples (xs ascending) at <paramref name="x"/>, clamped to the ends.</summary>
+        public static double Interpolate(double[] xs, double[] ys, int count, double x)
+        {
+            if (count == 0)
+                return double.NaN;
+            if (x <= xs[0])
+                return ys[0];
+            for (int i = 1; i < count; i++)
+                if (x <= xs[i])
+                    return ys[i - 1] + (ys[i] - ys[i - 1]) * (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+            return ys[count - 1];
+        }
+    }
+}

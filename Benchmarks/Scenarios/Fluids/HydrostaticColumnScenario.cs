@@ -1,0 +1,126 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Hydrostatic column: a 0.2 × 0.4 × 0.2 m block of water (Δx = 2.5 cm, 1024 particles) released at rest in a
+    /// box of the same footprint. Setup runs it for the settle time (10 s in the full run) in 1/60 s frames and
+    /// measures: the interior pressure's L2 error against ρ₀·g·(H − y) (interior = at least one kernel radius h from the walls, the
+    /// floor and the surface; weakly compressible only, position-based fluids have no pressure), the mean interior
+    /// density error, the kinetic energy per particle mass and how far the surface moved over the last 90 % of the
+    /// run. Each timed Step is one more 1/60 s frame of the settled column; an item is one particle-substep.
+    /// </summary>
+    public sealed class HydrostaticColumnScenario : IScenario
+    {
+        const float k_Spacing = 0.025f;
+        const float k_Frame = 1f / 60f;
+        static readonly float3 s_Block = new float3(0.2f, 0.4f, 0.2f);
+
+        readonly FluidParameters m_Parameters;
+        readonly string m_Setting;
+        readonly float m_SettleSeconds;
+        FluidConstants m_Constants;
+        FluidBuffers m_Buffers;
+        long m_Items;
+        int m_Initial;
+        double m_PressureError, m_DensityError, m_Kinetic, m_Drift;
+
+        public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds)
+        {
+            m_Parameters = parameters;
+            m_Setting = setting;
+            m_SettleSeconds = settleSeconds;
+        }
+
+        public string Name => "HydrostaticColumn";
+        public string Method => $"{DamBreakScenario.SolverName(m_Parameters.Solver)} {m_Setting}, {m_SettleSeconds:0.#} s";
+        public int Size => m_Initial > 0 ? m_Initial : FluidScene.BlockCount(float3.zero, s_Block, k_Spacing);
+        public string SizeUnit => "particles";
+        public long ItemsPerStep => Math.Max(1, m_Items);
+
+        /// <summary>Reference speed √(2gH) of the column (m/s).</summary>
+        public static float ReferenceSpeed => (float)Math.Sqrt(2 * 9.81 * s_Block.y);
+
+        public void Setup()
+        {
+            FluidParameters p = m_Parameters;
+            p.ParticleSpacing = k_Spacing;
+            p.DomainMin = float3.zero;
+            p.DomainMax = new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z);
+            p.Gravity = new float3(0f, -9.81f, 0f);
+            m_Constants = new FluidConstants(p);
+            m_Buffers = new FluidBuffers(FluidScene.BlockCount(float3.zero, s_Block, k_Spacing), m_Constants.Grid);
+            m_Initial = FluidScene.FillBlock(m_Buffers, float3.zero, s_Block, k_Spacing);
+            int frames = (int)Math.Round(m_SettleSeconds / k_Frame);
+            double early = double.NaN;
+            for (int f = 0; f < frames; f++)
+            {
+                Frame();
+                if (f == frames / 10)
+                    early = Surface();
+            }
+            Measure(early);
+        }
+
+        FluidStepReport Frame()
+        {
+            FluidBuffers b = m_Buffers;
+            FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
+            m_Items = (long)r.Substeps * r.Count;
+            return r;
+        }
+
+        /// <summary>Surface height H (m): the highest particle with neighbours, plus half a spacing.</summary>
+        double Surface()
+        {
+            double top = 0;
+            for (int i = 0; i < m_Buffers.Status.Count; i++)
+                if (m_Buffers.NeighbourCounts[i] >= 4)
+                    top = Math.Max(top, m_Buffers.Positions[i].y);
+            return top + 0.5 * k_Spacing;
+        }
+
+        void Measure(double early)
+        {
+            FluidBuffers b = m_Buffers;
+            double H = Surface();
+            double rho0 = m_Constants.Parameters.RestDensity, g = 9.81, border = m_Constants.Kernels.H;
+            double pErr = 0, pRef = 0, dErr = 0, ke = 0;
+            int interior = 0;
+            for (int i = 0; i < b.Status.Count; i++)
+            {
+                float3 x = b.Positions[i];
+                ke += 0.5 * math.lengthsq(b.Velocities[i]);
+                if (x.x < border || x.x > s_Block.x - border || x.z < border || x.z > s_Block.z - border || x.y < border || x.y > H - border)
+                    continue;
+                interior++;
+                double rho = b.Densities[i];
+                dErr += Math.Abs(rho / rho0 - 1);
+                double reference = rho0 * g * (H - x.y);
+                double rc = Math.Max(rho, rho0);
+                double pressure = b.Scratch.Pressures[i] * rc * rc;
+                pErr += (pressure - reference) * (pressure - reference);
+                pRef += reference * reference;
+            }
+            bool tait = m_Constants.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
+            m_PressureError = tait && pRef > 0 ? Math.Sqrt(pErr / pRef) : double.NaN;
+            m_DensityError = interior > 0 ? dErr / interior : double.NaN;
+            m_Kinetic = ke / Math.Max(1, b.Status.Count);
+            m_Drift = Math.Abs(H - early);
+        }
+
+        public void Step() => Frame();
+
+        public IReadOnlyList<Metric> Evaluate() => new[]
+        {
+            new Metric("pressure L2 error", 100 * m_PressureError, "%"),
+            new Metric("density error", 100 * m_DensityError, "%"),
+            new Metric("kinetic energy", m_Kinetic, "J/kg"),
+            new Metric("surface drift", 1000 * m_Drift, "mm"),
+            new Metric("particles lost", m_Initial - m_Buffers.Status.Count),
+        };
+    }
+}
