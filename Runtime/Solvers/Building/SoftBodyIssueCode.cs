@@ -200,5 +200,55 @@ namespace SoftBodyDynamics.Solvers
         /// substeps, a softer material, a lower resolution, or an unconditionally stable integrator.
         /// </summary>
         FemStepAboveStableLimit = 191,
+
+        // ---- Fluids (FluidValidation)
+
+        /// <summary>The particle spacing is not a positive finite length (m).</summary>
+        FluidSpacingInvalid = 200,
+        /// <summary>The kernel radius ratio h/Δx is outside 1.5–4 (too few or far too many neighbours).</summary>
+        FluidKernelRatioInvalid = 201,
+        /// <summary>The rest density is not a positive finite value (kg/m³).</summary>
+        FluidDensityInvalid = 202,
+        /// <summary>The speed of sound is not positive and finite, or absurd (above 1500 m/s, the real value for water, which would need thousands of substeps).</summary>
+        FluidSpeedOfSoundInvalid = 203,
+        /// <summary>The domain box is not finite or is smaller than one kernel radius along some axis.</summary>
+        FluidDomainInvalid = 204,
+        /// <summary>The domain holds more grid cells than the grid allows (<c>FluidGrid.MaxCells</c>): the cells get coarser and the neighbour search slower. Shrink the domain or increase the spacing.</summary>
+        FluidGridTooLarge = 205,
+        /// <summary>The particle budget is not positive.</summary>
+        FluidBudgetInvalid = 206,
+        /// <summary>Viscosity, cohesion, separation, alignment or surface tension is negative or not finite.</summary>
+        FluidCoefficientInvalid = 207,
+        /// <summary>Warning: the CFL limit asks for more substeps per 1/60 s frame than the cap allows even for a fluid at rest; the step will run capped (and report it). Lower the speed of sound or raise the cap.</summary>
+        FluidSubstepCapTooLow = 208,
+
+        // ---- Fluid taps and drains (FluidTapValidation)
+
+        /// <summary>The tap's shape is not one of point, disc, sphere or box.</summary>
+        FluidTapShapeInvalid = 220,
+        /// <summary>The tap's radius or half extents are negative or not finite (m).</summary>
+        FluidTapSizeInvalid = 221,
+        /// <summary>The tap's rotation is not a finite non-zero quaternion (no flow direction).</summary>
+        FluidTapDirectionInvalid = 222,
+        /// <summary>The cone angle is outside [0°, 180°).</summary>
+        FluidTapConeInvalid = 223,
+        /// <summary>The speed or its random range is negative or not finite (m/s), or the range exceeds the speed.</summary>
+        FluidTapSpeedInvalid = 224,
+        /// <summary>The rate (particles/s) or volume flow (L/s) is negative or not finite.</summary>
+        FluidTapRateInvalid = 225,
+        /// <summary>The pulse period is negative or the duty cycle is outside (0, 1].</summary>
+        FluidTapPulseInvalid = 226,
+        /// <summary>Duration, start delay or prewarm is negative or not finite (s).</summary>
+        FluidTapTimingInvalid = 227,
+        /// <summary>A burst has a negative time or count, fewer than one cycle, or several cycles with no positive interval.</summary>
+        FluidTapBurstInvalid = 228,
+        /// <summary>The lifetime or its random range is negative or not finite (s), or the range exceeds the lifetime.</summary>
+        FluidTapLifetimeInvalid = 229,
+        /// <summary>The steady-state alive count (rate × lifetime, with bursts) exceeds the fluid's particle budget: the tap would stall at the budget.</summary>
+        FluidTapOverBudget = 230,
+        /// <summary>Warning: the tap emits nothing (zero rate and no bursts).</summary>
+        FluidTapSilent = 231,
+        /// <summary>The drain's shape is invalid (non-positive or non-finite size).</summary>
+        FluidDrainInvalid = 232,
     }
 }
