@@ -95,6 +95,28 @@ namespace SoftBodyDynamics.Solvers
             VectorsB = vectorsB;
         }
 
+        /// <summary>Ints of one flat integer array holding all integer scratch for <paramref name="capacity"/> particles and <paramref name="cellCount"/> cells.</summary>
+        public static int FlatInts(int capacity, int cellCount) => capacity * (4 + MaxNeighbours) + cellCount + 2;
+
+        /// <summary>Floats of one flat float array holding all float scratch.</summary>
+        public static int FlatFloats(int capacity) => 3 * capacity;
+
+        /// <summary>Vectors of one flat float3 array holding all vector scratch.</summary>
+        public static int FlatVectors(int capacity) => 3 * capacity;
+
+        /// <summary>
+        /// The scratch as slices of three flat arrays (of at least <see cref="FlatInts"/>, <see cref="FlatFloats"/> and
+        /// <see cref="FlatVectors"/> elements): the layout ECS buffers and the GPU backend use.
+        /// </summary>
+        public static FluidScratch FromFlat(Span<int> ints, Span<float> floats, Span<float3> vectors, int capacity, int cellCount)
+        {
+            int n = capacity;
+            return new FluidScratch(ints.Slice(0, n), ints.Slice(n, n), ints.Slice(2 * n, n), ints.Slice(3 * n, cellCount + 2),
+                floats.Slice(0, n), floats.Slice(n, n), floats.Slice(2 * n, n),
+                vectors.Slice(0, n), vectors.Slice(n, n), vectors.Slice(2 * n, n),
+                ints.Slice(3 * n + cellCount + 2, n * MaxNeighbours), ints.Slice(3 * n + cellCount + 2 + n * MaxNeighbours, n));
+        }
+
         /// <summary>Scratch bytes per particle slot (the cell table comes on top: 4 bytes per cell).</summary>
         public const int BytesPerParticle = 3 * 4 + 3 * 4 + 3 * 12 + (MaxNeighbours + 1) * 4;
     }

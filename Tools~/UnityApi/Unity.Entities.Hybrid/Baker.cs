@@ -12,6 +12,10 @@ namespace Unity.Entities
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.IBaker.GetEntity.html
         public Entity GetEntity(TransformUsageFlags flags) => throw null;
 
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.IBaker.GetEntity.html
+        // (source: Unity.Entities.Hybrid/Baking/Baker.cs, 1.4: public Entity GetEntity(Component authoring, TransformUsageFlags flags))
+        public Entity GetEntity(Component authoring, TransformUsageFlags flags) => throw null;
+
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.IBaker.DependsOn.html
         public T DependsOn<T>(T dependency) where T : Object => throw null;
 

@@ -1,0 +1,159 @@
+using SoftBodyDynamics.Solvers;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Authoring
+{
+    /// <summary>A fluid material for the inspector: one of the presets, or Custom to set every value by hand.</summary>
+    public enum FluidAuthoringPreset
+    {
+        Custom = 0,
+        Water = 1,
+        Honey = 2,
+        Oil = 3,
+        Slime = 4,
+        Lava = 5,
+    }
+
+    /// <summary>
+    /// A particle fluid: its material, resolution, solver and domain. Taps (<see cref="FluidTapAuthoring"/>) pour into
+    /// it and drains (<see cref="FluidDrainAuthoring"/>) remove from it; its particles live in packed buffers on the
+    /// fluid entity. The domain box is axis-aligned and centred on this GameObject's position (rotation and scale are
+    /// ignored). With a preset other than Custom, the material values (density, viscosity and its iterations,
+    /// cohesion) come from the preset and the fields below them are ignored.
+    /// </summary>
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Soft Body Dynamics/Fluid")]
+    public sealed class FluidAuthoring : MonoBehaviour
+    {
+        [Tooltip("Material preset (physical density and viscosity). Custom: use the material fields below.")]
+        public FluidAuthoringPreset preset = FluidAuthoringPreset.Water;
+
+        [Tooltip("Pressure solver. Weakly compressible SPH: cheap per substep, substep set by the speed of sound. Position-based fluids: large substeps, accuracy set by the iterations.")]
+        public FluidSolverKind solver = FluidSolverKind.WeaklyCompressible;
+
+        [Tooltip("Rest distance between particles (m). Sets particle mass and the spawn lattice; halving it means 8× the particles. Default 0.02 m.")]
+        [Min(0f)]
+        public float particleSpacing = 0.02f;
+
+        [Tooltip("Kernel radius h as a multiple of the spacing (1.5–4). 2 gives about 30 neighbours.")]
+        [Range(1.5f, 4f)]
+        public float kernelRadiusRatio = 2f;
+
+        [Tooltip("Custom material: rest density ρ₀ (kg/m³). Water 1000.")]
+        [Min(0f)]
+        public float restDensity = 1000f;
+
+        [Tooltip("Weakly compressible: numerical speed of sound c₀ (m/s). About 10× the fastest flow keeps the density error near 1 %; the substep shrinks as c₀ grows. Default 10 m/s.")]
+        [Min(0f)]
+        public float speedOfSound = 10f;
+
+        [Tooltip("Weakly compressible: artificial viscosity α (0–1) damping acoustic noise. Default 0.05.")]
+        [Range(0f, 1f)]
+        public float artificialViscosity = 0.05f;
+
+        [Tooltip("Position-based: density-constraint iterations per substep (1–100). Default 4.")]
+        [Range(1, 100)]
+        public int pressureIterations = 4;
+
+        [Tooltip("Custom material: kinematic viscosity ν (m²/s). Water 1e-6, oil 1e-4, honey 7e-3. Implicit: any value is stable.")]
+        [Min(0f)]
+        public float viscosity = 1e-6f;
+
+        [Tooltip("Custom material: Jacobi iterations of the implicit viscosity per substep (0 = no viscosity pass). More iterations bring a thick fluid closer to its viscosity.")]
+        [Range(0, 50)]
+        public int viscosityIterations = 1;
+
+        [Tooltip("Custom material: cohesion model. Flocking: cheap surface tension by steering rules. Akinci: cohesion and curvature forces (Akinci et al. 2013).")]
+        public FluidCohesionModel cohesion = FluidCohesionModel.None;
+
+        [Tooltip("Flocking: acceleration toward the neighbour centroid per metre of offset (1/s²). 0 = off.")]
+        [Min(0f)]
+        public float cohesionWeight;
+
+        [Tooltip("Flocking: acceleration away from neighbours closer than the spacing per metre of overlap (1/s²). 0 = off.")]
+        [Min(0f)]
+        public float separationWeight;
+
+        [Tooltip("Flocking: rate at which a velocity relaxes toward its neighbours' mean (1/s). 0 = off.")]
+        [Min(0f)]
+        public float alignmentRate;
+
+        [Tooltip("Akinci: surface tension coefficient γ. 0 = off.")]
+        [Min(0f)]
+        public float surfaceTension;
+
+        [Tooltip("Multiplier of gravity (−9.81 m/s² along world Y) for this fluid. 0 = weightless.")]
+        public float gravityScale = 1f;
+
+        [Tooltip("Size of the domain box (m), centred on this GameObject. Particles stay inside; the neighbour grid covers it.")]
+        public Vector3 domainSize = new Vector3(2f, 2f, 2f);
+
+        [Tooltip("Most particles the fluid holds (memory: about 370 bytes each plus 4 bytes per grid cell). Taps stall at the budget.")]
+        [Min(1)]
+        public int particleBudget = 20000;
+
+        [Tooltip("CFL number λ of the adaptive substep (0.05–1). Default 0.4.")]
+        [Range(0.05f, 1f)]
+        public float cflNumber = 0.4f;
+
+        [Tooltip("Most substeps per fixed step (1–256). When the CFL limit asks for more, the step runs this many and warns.")]
+        [Range(1, 256)]
+        public int maxSubsteps = 32;
+
+        [Tooltip("Coulomb friction against colliders (0 = free slip).")]
+        [Min(0f)]
+        public float wallFriction;
+
+        /// <summary>The solver settings these fields describe (the preset's material when one is chosen), in world space.</summary>
+        public FluidParameters ToParameters()
+        {
+            FluidParameters p = preset == FluidAuthoringPreset.Custom ? FluidParameters.Default : FluidPresets.Get(ToPresetKind(preset)).Parameters;
+            if (preset == FluidAuthoringPreset.Custom)
+            {
+                p.RestDensity = restDensity;
+                p.Viscosity = viscosity;
+                p.ViscosityIterations = viscosityIterations;
+                p.Cohesion = cohesion;
+                p.CohesionWeight = cohesionWeight;
+                p.SeparationWeight = separationWeight;
+                p.AlignmentRate = alignmentRate;
+                p.SurfaceTension = surfaceTension;
+            }
+            p.Solver = solver;
+            p.ParticleSpacing = particleSpacing;
+            p.KernelRadiusRatio = kernelRadiusRatio;
+            p.SpeedOfSound = speedOfSound;
+            p.ArtificialViscosity = artificialViscosity;
+            p.PressureIterations = pressureIterations;
+            p.Gravity = new Unity.Mathematics.float3(0f, -9.81f * gravityScale, 0f);
+            Unity.Mathematics.float3 centre = UnityMathConversions.ToFloat3(transform.position);
+            Unity.Mathematics.float3 half = 0.5f * UnityMathConversions.ToFloat3(domainSize);
+            p.DomainMin = centre - half;
+            p.DomainMax = centre + half;
+            p.CflNumber = cflNumber;
+            p.MaxSubsteps = maxSubsteps;
+            p.WallFriction = wallFriction;
+            return p;
+        }
+
+        /// <summary>The look's base colour of the preset (white for Custom).</summary>
+        public Unity.Mathematics.float4 PresetColor =>
+            preset == FluidAuthoringPreset.Custom ? new Unity.Mathematics.float4(1f) : FluidPresets.Get(ToPresetKind(preset)).Color;
+
+        /// <summary>The solver preset of an inspector preset (Custom maps to water).</summary>
+        public static FluidPresetKind ToPresetKind(FluidAuthoringPreset preset) => preset switch
+        {
+            FluidAuthoringPreset.Honey => FluidPresetKind.Honey,
+            FluidAuthoringPreset.Oil => FluidPresetKind.Oil,
+            FluidAuthoringPreset.Slime => FluidPresetKind.Slime,
+            FluidAuthoringPreset.Lava => FluidPresetKind.Lava,
+            _ => FluidPresetKind.Water,
+        };
+
+        void OnDrawGizmos()
+        {
+            Gizmos.color = new Color(0.2f, 0.6f, 1f, 0.8f);
+            Gizmos.DrawWireCube(transform.position, domainSize);
+        }
+    }
+}

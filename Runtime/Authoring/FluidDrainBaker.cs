@@ -1,0 +1,26 @@
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Entities;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Authoring
+{
+    /// <summary>Bakes a <see cref="FluidDrainAuthoring"/> into a <see cref="FluidDrainVolume"/>; an invalid drain is not baked and the error is logged.</summary>
+    public sealed class FluidDrainBaker : Baker<FluidDrainAuthoring>
+    {
+        public override void Bake(FluidDrainAuthoring authoring)
+        {
+            DependsOn(authoring.transform);
+            var issues = new List<SoftBodyIssue>();
+            FluidDrain drain = authoring.ToDrain();
+            FluidValidation.ValidateDrain(drain, 0, issues);
+            if (authoring.fluid == null)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidDrainInvalid, -1, "The drain has no fluid: assign the Fluid it drains."));
+            foreach (SoftBodyIssue issue in issues)
+                Debug.LogError($"Fluid Drain on '{authoring.name}': {issue.Message} The drain was not baked.", authoring);
+            if (SoftBodyIssue.AnyError(issues))
+                return;
+            AddComponent(GetEntity(TransformUsageFlags.None), new FluidDrainVolume { Drain = drain, Fluid = GetEntity(authoring.fluid, TransformUsageFlags.None) });
+        }
+    }
+}

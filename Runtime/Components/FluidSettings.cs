@@ -1,0 +1,34 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Entities;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// A fluid (baked from <c>FluidAuthoring</c>): its solver settings and particle budget. Its particles live in the
+    /// fluid entity's buffers (packed storage, <see cref="FluidPosition"/> and the rest); the
+    /// <see cref="FluidSimulationSystem"/> runs only while a fluid exists.
+    /// </summary>
+    public struct FluidSettings : IComponentData
+    {
+        /// <summary>Solver settings (units in <see cref="FluidParameters"/>).</summary>
+        public FluidParameters Parameters;
+        /// <summary>Most particles the fluid holds (the buffers' length).</summary>
+        public int Budget;
+        /// <summary>Base colour of the look, linear RGBA (from the preset).</summary>
+        public float4 Color;
+    }
+
+    /// <summary>The fluid's counters and what its last frame did.</summary>
+    public struct FluidRuntime : IComponentData
+    {
+        /// <summary>Live particles and the spawned / killed / expired / invalid totals.</summary>
+        public FluidStatus Status;
+        /// <summary>The last frame: solver step report, drained, spawned, held back, over budget.</summary>
+        public FluidFrameReport LastFrame;
+        /// <summary>The buffers have been sized to the budget.</summary>
+        public bool Initialized;
+        /// <summary>The taps' prewarm has run.</summary>
+        public bool Prewarmed;
+    }
+}

@@ -1,0 +1,129 @@
+using NUnit.Framework;
+using SoftBodyDynamics.Solvers;
+using Unity.Core;
+using Unity.Entities;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Editor
+{
+    /// <summary>
+    /// The fluid system in a test world: it runs only when a fluid exists, a tap fills the fluid's packed buffers, a
+    /// drain empties them, and the count obeys Count = Spawned − Killed − Expired − Invalid. Each update steps the
+    /// system once with a fixed dt and completes the jobs.
+    /// </summary>
+    public class FluidSystemTests
+    {
+        const float k_Dt = 1f / 60f;
+
+        World m_World;
+        EntityManager m_Manager;
+        SystemHandle m_Simulation;
+        double m_ElapsedTime;
+
+        [SetUp]
+        public void SetUp()
+        {
+            m_World = new World("Fluid system tests");
+            m_Manager = m_World.EntityManager;
+            m_Simulation = m_World.CreateSystem<FluidSimulationSystem>();
+            m_ElapsedTime = 0.0;
+        }
+
+        [TearDown]
+        public void TearDown()
+        {
+            m_Manager.CompleteAllTrackedJobs();
+            m_World.Dispose();
+        }
+
+        /// <summary>A water fluid in a 0.4 m box above the origin, with the components the baker adds.</summary>
+        Entity CreateFluid(int budget)
+        {
+            FluidParameters p = FluidParameters.Default;
+            p.DomainMin = new float3(-0.2f, 0f, -0.2f);
+            p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
+            Entity entity = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(entity, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f) });
+            m_Manager.AddComponentData(entity, new FluidRuntime());
+            m_Manager.AddBuffer<FluidPosition>(entity);
+            m_Manager.AddBuffer<FluidVelocity>(entity);
+            m_Manager.AddBuffer<FluidAge>(entity);
+            m_Manager.AddBuffer<FluidLifetime>(entity);
+            m_Manager.AddBuffer<FluidAttribute>(entity);
+            m_Manager.AddBuffer<FluidId>(entity);
+            m_Manager.AddBuffer<FluidScratchInt>(entity);
+            m_Manager.AddBuffer<FluidScratchFloat>(entity);
+            m_Manager.AddBuffer<FluidScratchVector>(entity);
+            m_Manager.AddBuffer<FluidTapRuntime>(entity);
+            return entity;
+        }
+
+        Entity CreateTap(Entity fluid, float rate, float lifetime)
+        {
+            FluidTapSettings s = FluidTapSettings.Default;
+            s.Position = new float3(0f, 0.3f, 0f);
+            s.Rotation = quaternion.AxisAngle(new float3(1f, 0f, 0f), math.PI / 2f);
+            s.Rate = rate;
+            s.Lifetime = lifetime;
+            Entity tap = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(tap, new FluidTap { Settings = s, Fluid = fluid });
+            return tap;
+        }
+
+        void Update(int frames = 1)
+        {
+            for (int f = 0; f < frames; f++)
+            {
+                m_ElapsedTime += k_Dt;
+                m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_Simulation.Update(m_World.Unmanaged);
+                m_Manager.CompleteAllTrackedJobs();
+            }
+        }
+
+        FluidStatus Status(Entity fluid) => m_Manager.GetComponentData<FluidRuntime>(fluid).Status;
+
+        [Test]
+        public void FluidSystem_RunsOnlyWhenAFluidExists()
+        {
+            Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_Simulation).ShouldRunSystem(), Is.False, "no fluid: no fluid system");
+            CreateFluid(100);
+            Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_Simulation).ShouldRunSystem(), Is.True);
+        }
+
+        [Test]
+        public void Tap_FillsThePackedBuffers_AndParticlesFall()
+        {
+            Entity fluid = CreateFluid(2000);
+            CreateTap(fluid, 300f, 0f);
+            Update(30);
+            FluidStatus status = Status(fluid);
+            Assert.That(status.Count, Is.GreaterThan(50));
+            Assert.AreEqual(2000, m_Manager.GetBuffer<FluidPosition>(fluid, true).Length, "buffers sized to the budget");
+            DynamicBuffer<FluidPosition> x = m_Manager.GetBuffer<FluidPosition>(fluid, true);
+            for (int i = 0; i < status.Count; i++)
+            {
+                Assert.That(math.all(math.isfinite(x[i].Value)));
+                Assert.That(x[i].Value.y, Is.LessThanOrEqualTo(0.3f + 1e-3f), "poured down from the tap");
+            }
+            Assert.AreEqual(status.Spawned - status.Killed - status.Expired - status.Invalid, status.Count);
+        }
+
+        [Test]
+        public void Drain_AndLifetimes_RemoveParticles_AndTheCountAddsUp()
+        {
+            Entity fluid = CreateFluid(2000);
+            CreateTap(fluid, 300f, 0.5f);
+            Entity drain = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(drain, new FluidDrainVolume
+            {
+                Drain = new FluidDrain { Shape = ColliderShape.Box(new float3(0f, 0.02f, 0f), quaternion.identity, new float3(0.2f, 0.03f, 0.2f)) },
+                Fluid = fluid,
+            });
+            Update(90);
+            FluidStatus status = Status(fluid);
+            Assert.That(status.Killed + status.Expired, Is.GreaterThan(0));
+            Assert.AreEqual(status.Spawned - status.Killed - status.Expired - status.Invalid, status.Count);
+        }
+    }
+}
