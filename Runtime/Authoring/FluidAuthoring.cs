@@ -100,6 +100,12 @@ namespace SoftBodyDynamics.Authoring
         [Range(1, 256)]
         public int maxSubsteps = 32;
 
+        [Tooltip("Packed: particles live only in the fluid's buffers (cheapest; 100k+ particles). Entities: one entity per particle, instantiated from the particle prefab, that gameplay code can query, tag and destroy.")]
+        public FluidStorage storage = FluidStorage.Packed;
+
+        [Tooltip("Entities storage: the prefab (with a Metaball Particle component) every particle is instantiated from.")]
+        public MetaballParticleAuthoring particlePrefab;
+
         [Tooltip("Coulomb friction against colliders (0 = free slip).")]
         [Min(0f)]
         public float wallFriction;

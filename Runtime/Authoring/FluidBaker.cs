@@ -18,6 +18,9 @@ namespace SoftBodyDynamics.Authoring
             FluidParameters parameters = authoring.ToParameters();
             var issues = new List<SoftBodyIssue>();
             FluidValidation.Validate(parameters, authoring.particleBudget, issues);
+            if (authoring.storage == FluidStorage.Entities && authoring.particlePrefab == null)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidPrefabMissing, -1,
+                    "Entities storage needs a particle prefab with a Metaball Particle component; assign one or use Packed storage."));
             foreach (SoftBodyIssue issue in issues)
             {
                 string message = $"Fluid on '{authoring.name}': {issue.Message}";
@@ -30,7 +33,14 @@ namespace SoftBodyDynamics.Authoring
                 return;
 
             Entity entity = GetEntity(TransformUsageFlags.None);
-            AddComponent(entity, new FluidSettings { Parameters = parameters, Budget = authoring.particleBudget, Color = authoring.PresetColor });
+            AddComponent(entity, new FluidSettings
+            {
+                Parameters = parameters,
+                Budget = authoring.particleBudget,
+                Color = authoring.PresetColor,
+                Storage = authoring.storage,
+                ParticlePrefab = authoring.storage == FluidStorage.Entities ? GetEntity(authoring.particlePrefab, TransformUsageFlags.Dynamic) : Entity.Null,
+            });
             AddComponent(entity, new FluidRuntime());
             AddBuffer<FluidPosition>(entity);
             AddBuffer<FluidVelocity>(entity);

@@ -17,6 +17,10 @@ namespace SoftBodyDynamics
         public int Budget;
         /// <summary>Base colour of the look, linear RGBA (from the preset).</summary>
         public float4 Color;
+        /// <summary>Packed (buffers only) or one entity per particle.</summary>
+        public FluidStorage Storage;
+        /// <summary>Entities storage: the particle prefab (with <see cref="FluidParticle"/>) new particles are instantiated from.</summary>
+        public Entity ParticlePrefab;
     }
 
     /// <summary>The fluid's counters and what its last frame did.</summary>

@@ -37,13 +37,15 @@ namespace SoftBodyDynamics.Tests.Editor
         }
 
         /// <summary>A water fluid in a 0.4 m box above the origin, with the components the baker adds.</summary>
-        Entity CreateFluid(int budget)
+        Entity CreateFluid(int budget) => CreateFluid(budget, FluidStorage.Packed, Entity.Null);
+
+        Entity CreateFluid(int budget, FluidStorage storage, Entity prefab)
         {
             FluidParameters p = FluidParameters.Default;
             p.DomainMin = new float3(-0.2f, 0f, -0.2f);
             p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
             Entity entity = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(entity, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f) });
+            m_Manager.AddComponentData(entity, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f), Storage = storage, ParticlePrefab = prefab });
             m_Manager.AddComponentData(entity, new FluidRuntime());
             m_Manager.AddBuffer<FluidPosition>(entity);
             m_Manager.AddBuffer<FluidVelocity>(entity);
@@ -123,6 +125,52 @@ namespace SoftBodyDynamics.Tests.Editor
             Update(90);
             FluidStatus status = Status(fluid);
             Assert.That(status.Killed + status.Expired, Is.GreaterThan(0));
+            Assert.AreEqual(status.Spawned - status.Killed - status.Expired - status.Invalid, status.Count);
+        }
+
+        /// <summary>Particle entities of <paramref name="fluid"/> (Entities storage).</summary>
+        int ParticleEntities(Entity fluid)
+        {
+            EntityQuery query = m_Manager.CreateEntityQuery(typeof(FluidParticle));
+            var data = query.ToComponentDataArray<FluidParticle>(Unity.Collections.Allocator.Temp);
+            int n = 0;
+            for (int i = 0; i < data.Length; i++)
+                n += data[i].Fluid == fluid ? 1 : 0;
+            data.Dispose();
+            return n;
+        }
+
+        [Test]
+        public void EntityStorage_HasOneEntityPerParticle_AndGameplayCanDestroyOne()
+        {
+            // The template the particles are instantiated from: a FluidParticle of no fluid and a transform.
+            Entity template = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(template, new FluidParticle());
+            m_Manager.AddComponentData(template, Unity.Transforms.LocalTransform.FromPositionRotation(float3.zero, quaternion.identity));
+            Entity fluid = CreateFluid(2000, FluidStorage.Entities, template);
+            CreateTap(fluid, 300f, 0f);
+            Update(20);
+            FluidStatus status = Status(fluid);
+            Assert.That(status.Count, Is.GreaterThan(20));
+            Assert.AreEqual(status.Count, ParticleEntities(fluid), "one entity per live particle");
+
+            // Gameplay destroys one particle entity: it leaves the fluid and counts as killed.
+            EntityQuery query = m_Manager.CreateEntityQuery(typeof(FluidParticle));
+            var entities = query.ToEntityArray(Unity.Collections.Allocator.Temp);
+            var data = query.ToComponentDataArray<FluidParticle>(Unity.Collections.Allocator.Temp);
+            for (int i = 0; i < entities.Length; i++)
+                if (data[i].Fluid == fluid)
+                {
+                    m_Manager.DestroyEntity(entities[i]);
+                    break;
+                }
+            entities.Dispose();
+            data.Dispose();
+            long killed = Status(fluid).Killed;
+            Update(1);
+            status = Status(fluid);
+            Assert.That(status.Killed, Is.GreaterThanOrEqualTo(killed + 1));
+            Assert.AreEqual(status.Count, ParticleEntities(fluid));
             Assert.AreEqual(status.Spawned - status.Killed - status.Expired - status.Invalid, status.Count);
         }
     }

@@ -250,5 +250,7 @@ namespace SoftBodyDynamics.Solvers
         FluidTapSilent = 231,
         /// <summary>The drain's shape is invalid (non-positive or non-finite size).</summary>
         FluidDrainInvalid = 232,
+        /// <summary>A fluid with Entities storage has no particle prefab to instantiate.</summary>
+        FluidPrefabMissing = 233,
     }
 }

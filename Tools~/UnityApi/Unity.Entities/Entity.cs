@@ -8,6 +8,8 @@ namespace Unity.Entities
         public int Index;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.Entity.Version.html
         public int Version;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.Entity.Null.html
+        public static Entity Null => throw null;
 
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.Entity.op_Equality.html
         // (source: public static bool operator ==(Entity lhs, Entity rhs))

@@ -1,5 +1,7 @@
 // Source: needle-mirror/com.unity.entities 1.4.2, Unity.Entities/EntityManager.cs. The enableable-component methods
 // constrain T to IEnableableComponent (plus unmanaged under UNITY_DISABLE_MANAGED_COMPONENTS), as declared there.
+using Unity.Collections;
+
 namespace Unity.Entities
 {
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.html
@@ -10,6 +12,15 @@ namespace Unity.Entities
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.DestroyEntity.html
         // (source: Unity.Entities/EntityManager.cs, 1.4.2: public void DestroyEntity(Entity entity))
         public void DestroyEntity(Entity entity) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.DestroyEntity.html
+        // (source: public void DestroyEntity(NativeArray<Entity> entities))
+        public void DestroyEntity(NativeArray<Entity> entities) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.CreateEntityQuery.html
+        // (source: public EntityQuery CreateEntityQuery(params ComponentType[] requiredComponents))
+        public EntityQuery CreateEntityQuery(params ComponentType[] requiredComponents) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.Instantiate.html
+        // (source: public void Instantiate(Entity srcEntity, NativeArray<Entity> outputEntities))
+        public void Instantiate(Entity srcEntity, NativeArray<Entity> outputEntities) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.Exists.html
         public bool Exists(Entity entity) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityManager.AddComponent.html

@@ -12,5 +12,8 @@ namespace Unity.Entities
         public NativeArray<Entity> ToEntityArray(AllocatorManager.AllocatorHandle allocator) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.ToComponentDataArray.html
         public NativeArray<T> ToComponentDataArray<T>(AllocatorManager.AllocatorHandle allocator) where T : unmanaged, IComponentData => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.EntityQuery.CopyFromComponentDataArray.html
+        // (source: public void CopyFromComponentDataArray<T>(NativeArray<T> componentDataArray) where T : unmanaged, IComponentData)
+        public void CopyFromComponentDataArray<T>(NativeArray<T> componentDataArray) where T : unmanaged, IComponentData => throw null;
     }
 }

@@ -1,0 +1,108 @@
+using SoftBodyDynamics.Solvers;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+using UnityEngine;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>The buffers of one fluid entity, as the frame function takes them.</summary>
+    struct FluidEntityArrays
+    {
+        public DynamicBuffer<FluidPosition> Positions;
+        public DynamicBuffer<FluidVelocity> Velocities;
+        public DynamicBuffer<FluidAge> Ages;
+        public DynamicBuffer<FluidLifetime> Lifetimes;
+        public DynamicBuffer<FluidAttribute> Attributes;
+        public DynamicBuffer<FluidId> Ids;
+        public DynamicBuffer<FluidScratchInt> ScratchInts;
+        public DynamicBuffer<FluidScratchFloat> ScratchFloats;
+        public DynamicBuffer<FluidScratchVector> ScratchVectors;
+        public DynamicBuffer<FluidTapRuntime> Taps;
+    }
+
+    /// <summary>
+    /// One fluid's frame on ECS data, shared by the packed-storage job and the entity-storage path: sizes the buffers on
+    /// first use, collects this fluid's taps (with their state from the fluid's tap buffer) and drains, runs the taps'
+    /// prewarm once, then <see cref="FluidFrame.Advance"/>, writes the tap states back and logs what went out of bounds.
+    /// </summary>
+    static class FluidSystemFrame
+    {
+        /// <summary>Sizes the buffers to the budget if needed; false when they cannot hold it.</summary>
+        public static bool Prepare(in FluidSettings settings, ref FluidRuntime runtime, FluidEntityArrays a, out FluidConstants constants)
+        {
+            constants = new FluidConstants(settings.Parameters);
+            int budget = math.max(1, settings.Budget);
+            if (!runtime.Initialized)
+            {
+                FluidEntityBuffers.Resize(budget, constants.Grid.CellCount, a.Positions, a.Velocities, a.Ages, a.Lifetimes, a.Attributes, a.Ids,
+                    a.ScratchInts, a.ScratchFloats, a.ScratchVectors);
+                runtime.Initialized = true;
+            }
+            return a.Positions.Length >= budget;
+        }
+
+        public static FluidParticles Particles(FluidEntityArrays a) =>
+            FluidEntityBuffers.Particles(a.Positions, a.Velocities, a.Ages, a.Lifetimes, a.Attributes, a.Ids);
+
+        public static void Run(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime, FluidEntityArrays a,
+            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<FluidDrainVolume> drainVolumes, float dt)
+        {
+            int budget = math.max(1, settings.Budget);
+            FluidParticles particles = Particles(a);
+            FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
+
+            var instances = new NativeArray<FluidTapInstance>(taps.Length, Allocator.Temp);
+            var bursts = new NativeArray<FluidTapBurst>(taps.Length * FluidTap.MaxBursts, Allocator.Temp);
+            var owners = new NativeArray<int>(taps.Length, Allocator.Temp);
+            int tapCount = 0, burstCount = 0;
+            for (int t = 0; t < taps.Length; t++)
+            {
+                if (taps[t].Fluid != entity)
+                    continue;
+                FluidTap tap = taps[t];
+                int slot = FluidEntityBuffers.TapSlot(a.Taps, tapEntities[t]);
+                int count = math.clamp(tap.BurstCount, 0, FluidTap.MaxBursts);
+                for (int b = 0; b < count; b++)
+                    bursts[burstCount + b] = tap.Burst(b);
+                instances[tapCount] = new FluidTapInstance { Settings = tap.Settings, State = a.Taps[slot].State, BurstStart = burstCount, BurstCount = count };
+                owners[tapCount++] = slot;
+                burstCount += count;
+            }
+            var drains = new NativeArray<FluidDrain>(drainVolumes.Length, Allocator.Temp);
+            int drainCount = 0;
+            for (int d = 0; d < drainVolumes.Length; d++)
+                if (drainVolumes[d].Fluid == entity)
+                    drains[drainCount++] = drainVolumes[d].Drain;
+
+            var colliderSpan = colliders.Reinterpret<ColliderShape>().AsReadOnlySpan();
+            var tapSpan = instances.AsSpan().Slice(0, tapCount);
+            var burstSpan = bursts.AsReadOnlySpan().Slice(0, burstCount);
+            var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
+            if (!runtime.Prewarmed)
+            {
+                FluidFrame.Prewarm(constants, colliderSpan, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref runtime.Status);
+                runtime.Prewarmed = true;
+            }
+            FluidFrameReport report = FluidFrame.Advance(constants, colliderSpan, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch,
+                ref runtime.Status);
+            for (int t = 0; t < tapCount; t++)
+            {
+                FluidTapRuntime r = a.Taps[owners[t]];
+                r.State = instances[t].State;
+                a.Taps[owners[t]] = r;
+            }
+            runtime.LastFrame = report;
+            instances.Dispose();
+            bursts.Dispose();
+            owners.Dispose();
+            drains.Dispose();
+
+            if (report.Step.Invalid > 0)
+                Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the NaN guard removed {report.Step.Invalid} particle(s) with a non-finite position or velocity.");
+            if (report.Step.SubstepsWanted > report.Step.Substeps)
+                Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the CFL limit asked for {report.Step.SubstepsWanted} substeps, capped at {report.Step.Substeps}; lower the speed of sound or raise the substep cap.");
+        }
+    }
+}
