@@ -17,6 +17,10 @@ namespace UnityEditor
     // https://docs.unity3d.com/ScriptReference/PrefabUtility.html
     public sealed class PrefabUtility
     {
+        // https://docs.unity3d.com/ScriptReference/PrefabUtility.SaveAsPrefabAsset.html
+        // (public static GameObject SaveAsPrefabAsset(GameObject instanceRoot, string assetPath))
+        public static UnityEngine.GameObject SaveAsPrefabAsset(UnityEngine.GameObject instanceRoot, string assetPath) => throw null;
+
         // https://docs.unity3d.com/ScriptReference/PrefabUtility.RecordPrefabInstancePropertyModifications.html
         public static void RecordPrefabInstancePropertyModifications(UnityEngine.Object targetObject) => throw null;
     }

@@ -25,6 +25,7 @@ namespace SoftBodyDynamics.Solvers
     }
 
     /// <summary>A burst: <see cref="Count"/> particles at <see cref="Time"/>, repeated <see cref="Cycles"/> times every <see cref="Interval"/>.</summary>
+    [System.Serializable]
     public struct FluidTapBurst
     {
         /// <summary>Time of the first cycle after the tap starts (s, after the start delay; per loop when looping).</summary>
