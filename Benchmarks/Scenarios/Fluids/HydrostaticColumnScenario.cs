@@ -8,7 +8,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>
     /// Hydrostatic column: a 0.2 × 0.4 × 0.2 m block of water (Δx = 2.5 cm, 1024 particles) released at rest in a
     /// box of the same footprint. Setup runs it for the settle time (10 s in the full run) in 1/60 s frames and
-    /// measures: the interior pressure's L2 error against ρ₀·g·(H − y) (interior = at least one kernel radius h from the walls, the
+    /// measures: the interior pressure's L2 error against ρ₀·g·(H − y) and the error of its least-squares gradient against
+    /// −ρ₀g (interior = at least one kernel radius h from the walls, the
     /// floor and the surface; weakly compressible only, position-based fluids have no pressure), the mean interior
     /// density error, the kinetic energy per particle mass and how far the surface moved over the last 90 % of the
     /// run. Each timed Step is one more 1/60 s frame of the settled column; an item is one particle-substep.
@@ -26,7 +27,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         FluidBuffers m_Buffers;
         long m_Items;
         int m_Initial;
-        double m_PressureError, m_DensityError, m_Kinetic, m_Drift;
+        double m_PressureError, m_GradientError, m_DensityError, m_Kinetic, m_Drift;
 
         public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds)
         {
@@ -89,6 +90,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double H = Surface();
             double rho0 = m_Constants.Parameters.RestDensity, g = 9.81, border = m_Constants.Kernels.H;
             double pErr = 0, pRef = 0, dErr = 0, ke = 0;
+            double sy = 0, sp = 0, syy = 0, syp = 0;
             int interior = 0;
             for (int i = 0; i < b.Status.Count; i++)
             {
@@ -104,9 +106,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 double pressure = b.Scratch.Pressures[i] * rc * rc;
                 pErr += (pressure - reference) * (pressure - reference);
                 pRef += reference * reference;
+                sy += x.y;
+                sp += pressure;
+                syy += (double)x.y * x.y;
+                syp += x.y * pressure;
             }
             bool tait = m_Constants.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
             m_PressureError = tait && pRef > 0 ? Math.Sqrt(pErr / pRef) : double.NaN;
+            // Least-squares slope dp/dy of the interior pressure against the hydrostatic −ρ₀g: independent of where the
+            // surface is taken to be (the kernel's deficiency there shifts p by a constant, not its gradient).
+            double denominator = interior * syy - sy * sy;
+            double slope = denominator > 0 ? (interior * syp - sy * sp) / denominator : double.NaN;
+            m_GradientError = tait && interior > 2 ? Math.Abs(slope / (-rho0 * g) - 1) : double.NaN;
             m_DensityError = interior > 0 ? dErr / interior : double.NaN;
             m_Kinetic = ke / Math.Max(1, b.Status.Count);
             m_Drift = Math.Abs(H - early);
@@ -117,6 +128,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IReadOnlyList<Metric> Evaluate() => new[]
         {
             new Metric("pressure L2 error", 100 * m_PressureError, "%"),
+            new Metric("pressure gradient error", 100 * m_GradientError, "%"),
             new Metric("density error", 100 * m_DensityError, "%"),
             new Metric("kinetic energy", m_Kinetic, "J/kg"),
             new Metric("surface drift", 1000 * m_Drift, "mm"),

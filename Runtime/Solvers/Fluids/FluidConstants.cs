@@ -23,6 +23,13 @@ namespace SoftBodyDynamics.Solvers
         /// lattice sum by a few per cent, which the stiff Tait law would turn into a wall pressure).
         /// </summary>
         public readonly float WallScale;
+        /// <summary>
+        /// Scale κ∇ on the spiky pressure gradient so that the lattice at rest differentiates a linear field exactly:
+        /// the continuum identity ∫ x·∇W dV = −3 fails on the discrete lattice by a few tens of per cent for h = 2Δx, and the
+        /// hydrostatic pressure a column settles to would be off by the same factor. κ∇ = −3 / (V·Σⱼ rⱼ·∇W(rⱼ)) over the
+        /// lattice neighbours (V = m/ρ₀).
+        /// </summary>
+        public readonly float GradientCorrection;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -37,12 +44,28 @@ namespace SoftBodyDynamics.Solvers
             WallDistance = 0.5f * Parameters.ParticleSpacing;
             float continuum = Kernels.WallDensityFraction(WallDistance);
             WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
+            GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
         }
 
         /// <summary>The grid of a fluid: its domain box in cells of the kernel radius.</summary>
         public static FluidGrid GridOf(in FluidParameters sanitized) =>
             new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius);
+
+        /// <summary>Σ rₖ·∇W(rₖ) = Σ SpikyGradientScale(r)·r² over the lattice neighbours k ≠ 0 (1/m³; negative).</summary>
+        public static float LatticeGradientSum(in SphKernels kernels, float spacing)
+        {
+            int n = (int)math.ceil(kernels.H / spacing);
+            double sum = 0;
+            for (int z = -n; z <= n; z++)
+            for (int y = -n; y <= n; y++)
+            for (int x = -n; x <= n; x++)
+            {
+                float r = spacing * math.sqrt(x * x + y * y + z * z);
+                sum += (double)kernels.SpikyGradientScale(r) * r * r;
+            }
+            return (float)sum;
+        }
 
         /// <summary>Σ W(|k|·Δx) over the lattice points k with k.z ≥ 1: what a particle of a lattice half a spacing off a wall lacks (1/m³).</summary>
         public static float MissingLayersSum(in SphKernels kernels, float spacing)

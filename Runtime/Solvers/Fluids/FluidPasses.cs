@@ -262,7 +262,7 @@ namespace SoftBodyDynamics.Solvers
                             // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
                             sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
                     }
-                    sum *= -m * k.SpikyGradientCoefficient;
+                    sum *= -m * k.SpikyGradientCoefficient * c.GradientCorrection;
                     FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
                     a += prm.Gravity + sum + rho0 * s.Pressures[i] * push;
                 }
