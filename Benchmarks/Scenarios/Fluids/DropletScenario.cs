@@ -9,7 +9,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// Droplet: a 10 cm cube of fluid (Δx = 1 cm, 1000 particles) without gravity relaxes toward a sphere under its
     /// cohesion. Shape error = r_max/R − 1, the farthest particle centre from the centre of mass over the radius R
     /// of the ball of the same volume (0.26 for the cube's corners, 0 for a ball of lattice points up to half a
-    /// spacing); time to round = first time the shape error drops below 5 %. One Step is the whole 2 s run in 1/60 s
+    /// spacing; negative when cohesion squeezes the drop below the ball of its rest volume); time to round = first time
+    /// |shape error| drops below 5 %. One Step is the whole 2 s run in 1/60 s
     /// frames; an item is one particle-substep.
     /// </summary>
     public sealed class DropletScenario : IScenario, IScenarioRepeatCap
@@ -72,7 +73,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
                 m_Items += (long)r.Substeps * r.Count;
                 m_ShapeError = FarthestFromCentre(b) / radius - 1;
-                if (double.IsNaN(m_TimeToRound) && m_ShapeError < 0.05)
+                if (double.IsNaN(m_TimeToRound) && Math.Abs(m_ShapeError) < 0.05)
                     m_TimeToRound = f * k_Frame;
             }
             m_DensityError = FluidScene.MeanBulkDensityError(b, m_Constants.Parameters.RestDensity, 0);
