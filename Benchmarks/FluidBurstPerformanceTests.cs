@@ -17,25 +17,18 @@ namespace SoftBodyDynamics.Benchmarks
     /// </summary>
     public class FluidBurstPerformanceTests
     {
-        const float k_Spacing = 0.02f;
 
         [Test, Performance]
         public void Fluid_Substep_BurstJob([Values(22, 46)] int side)
         {
-            FluidParameters p = FluidParameters.Default;
-            p.ParticleSpacing = k_Spacing;
-            p.SpeedOfSound = 20f;
-            p.ViscosityIterations = 1;
-            float edge = side * k_Spacing;
-            p.DomainMin = float3.zero;
-            p.DomainMax = new float3(edge, 1.5f * edge, edge);
+            FluidParameters p = Scenarios.FluidThroughputScenario.CubeParameters(side);
             var c = new FluidConstants(p);
             int n = side * side * side;
             var lattice = new NativeArray<float3>(n, Allocator.Persistent);
             for (int z = 0, i = 0; z < side; z++)
             for (int y = 0; y < side; y++)
             for (int x = 0; x < side; x++, i++)
-                lattice[i] = (new float3(x, y, z) + 0.5f) * k_Spacing;
+                lattice[i] = (new float3(x, y, z) + 0.5f) * p.ParticleSpacing;
             var job = new FluidStepJob
             {
                 Parameters = p,

@@ -21,15 +21,7 @@ namespace SoftBodyDynamics.Authoring
             if (authoring.storage == FluidStorage.Entities && authoring.particlePrefab == null)
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidPrefabMissing, -1,
                     "Entities storage needs a particle prefab with a Metaball Particle component; assign one or use Packed storage."));
-            foreach (SoftBodyIssue issue in issues)
-            {
-                string message = $"Fluid on '{authoring.name}': {issue.Message}";
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
-                    Debug.LogError(message + " The fluid was not baked.", authoring);
-                else
-                    Debug.LogWarning(message, authoring);
-            }
-            if (SoftBodyIssue.AnyError(issues))
+            if (BakeIssueLog.Report(issues, "Fluid", authoring, "The fluid was not baked."))
                 return;
 
             Entity entity = GetEntity(TransformUsageFlags.None);

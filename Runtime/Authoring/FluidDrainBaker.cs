@@ -16,9 +16,7 @@ namespace SoftBodyDynamics.Authoring
             FluidValidation.ValidateDrain(drain, 0, issues);
             if (authoring.fluid == null)
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidDrainInvalid, -1, "The drain has no fluid: assign the Fluid it drains."));
-            foreach (SoftBodyIssue issue in issues)
-                Debug.LogError($"Fluid Drain on '{authoring.name}': {issue.Message} The drain was not baked.", authoring);
-            if (SoftBodyIssue.AnyError(issues))
+            if (BakeIssueLog.Report(issues, "Fluid Drain", authoring, "The drain was not baked."))
                 return;
             AddComponent(GetEntity(TransformUsageFlags.None), new FluidDrainVolume { Drain = drain, Fluid = GetEntity(authoring.fluid, TransformUsageFlags.None) });
         }

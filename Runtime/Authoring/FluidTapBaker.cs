@@ -27,15 +27,7 @@ namespace SoftBodyDynamics.Authoring
             if (bursts.Length > FluidTap.MaxBursts)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidTapBurstInvalid, FluidTap.MaxBursts,
                     $"A tap keeps at most {FluidTap.MaxBursts} bursts; bursts {FluidTap.MaxBursts} and later are ignored."));
-            foreach (SoftBodyIssue issue in issues)
-            {
-                string message = $"Fluid Tap on '{authoring.name}': {issue.Message}";
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
-                    Debug.LogError(message + " The tap was not baked.", authoring);
-                else
-                    Debug.LogWarning(message, authoring);
-            }
-            if (SoftBodyIssue.AnyError(issues))
+            if (BakeIssueLog.Report(issues, "Fluid Tap", authoring, "The tap was not baked."))
                 return;
 
             var tap = new FluidTap

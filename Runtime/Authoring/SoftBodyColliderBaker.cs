@@ -18,15 +18,7 @@ namespace SoftBodyDynamics.Authoring
             DependsOn(authoring.transform);
 
             List<SoftBodyIssue> issues = SoftBodyColliderValidation.Validate(authoring);
-            foreach (SoftBodyIssue issue in issues)
-            {
-                string message = $"Soft Body Collider on '{authoring.name}': {issue.Message}";
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
-                    Debug.LogError(message + " The collider was not baked.", authoring);
-                else
-                    Debug.LogWarning(message, authoring);
-            }
-            if (SoftBodyIssue.AnyError(issues))
+            if (BakeIssueLog.Report(issues, "Soft Body Collider", authoring, "The collider was not baked."))
                 return;
 
             Entity entity = GetEntity(TransformUsageFlags.None);

@@ -67,15 +67,23 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             _ => "pack/unpack (entity gather + scatter)",
         };
 
-        public void Setup()
+        /// <summary>The benchmark fluid for a cube of <paramref name="side"/>³ particles: water at Δx = 2 cm, c₀ = 20 m/s, one viscosity iteration, in a box of the cube's footprint 1.5 cubes high.</summary>
+        public static FluidParameters CubeParameters(int side)
         {
             FluidParameters p = FluidParameters.Default;
             p.ParticleSpacing = k_Spacing;
             p.SpeedOfSound = 20f;
             p.ViscosityIterations = 1;
-            float edge = m_Side * k_Spacing;
+            float edge = side * k_Spacing;
             p.DomainMin = float3.zero;
             p.DomainMax = new float3(edge, 1.5f * edge, edge);
+            return p;
+        }
+
+        public void Setup()
+        {
+            FluidParameters p = CubeParameters(m_Side);
+            float edge = m_Side * k_Spacing;
             m_Constants = new FluidConstants(p);
             m_Buffers = new FluidBuffers(Size, m_Constants.Grid);
             m_Count = FluidScene.FillBlock(m_Buffers, float3.zero, new float3(edge), k_Spacing);

@@ -53,41 +53,28 @@ namespace SoftBodyDynamics.Solvers
             new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius);
 
         /// <summary>Σ rₖ·∇W(rₖ) = Σ SpikyGradientScale(r)·r² over the lattice neighbours k ≠ 0 (1/m³; negative).</summary>
-        public static float LatticeGradientSum(in SphKernels kernels, float spacing)
+        public static float LatticeGradientSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.GradientDotOffset, false);
+
+        /// <summary>Σ W(|k|·Δx) over the lattice points k with k.z ≥ 1: what a particle of a lattice half a spacing off a wall lacks (1/m³).</summary>
+        public static float MissingLayersSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, true);
+
+        /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
+        public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, false);
+
+        enum LatticeTerm { Poly6, GradientDotOffset }
+
+        /// <summary>A kernel term summed in double over the cubic lattice around a particle (only the layers k.z ≥ 1 when <paramref name="beyondWall"/>).</summary>
+        static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall)
         {
             int n = (int)math.ceil(kernels.H / spacing);
             double sum = 0;
-            for (int z = -n; z <= n; z++)
+            for (int z = beyondWall ? 1 : -n; z <= n; z++)
             for (int y = -n; y <= n; y++)
             for (int x = -n; x <= n; x++)
             {
-                float r = spacing * math.sqrt(x * x + y * y + z * z);
-                sum += (double)kernels.SpikyGradientScale(r) * r * r;
+                float r2 = spacing * spacing * (x * x + y * y + z * z);
+                sum += term == LatticeTerm.Poly6 ? kernels.Poly6(r2) : (double)kernels.SpikyGradientScale(math.sqrt(r2)) * r2;
             }
-            return (float)sum;
-        }
-
-        /// <summary>Σ W(|k|·Δx) over the lattice points k with k.z ≥ 1: what a particle of a lattice half a spacing off a wall lacks (1/m³).</summary>
-        public static float MissingLayersSum(in SphKernels kernels, float spacing)
-        {
-            int n = (int)math.ceil(kernels.H / spacing);
-            double sum = 0;
-            for (int z = 1; z <= n; z++)
-            for (int y = -n; y <= n; y++)
-            for (int x = -n; x <= n; x++)
-                sum += kernels.Poly6(spacing * spacing * (x * x + y * y + z * z));
-            return (float)sum;
-        }
-
-        /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
-        public static float LatticeKernelSum(in SphKernels kernels, float spacing)
-        {
-            int n = (int)math.ceil(kernels.H / spacing);
-            double sum = 0;
-            for (int z = -n; z <= n; z++)
-            for (int y = -n; y <= n; y++)
-            for (int x = -n; x <= n; x++)
-                sum += kernels.Poly6(spacing * spacing * (x * x + y * y + z * z));
             return (float)sum;
         }
     }

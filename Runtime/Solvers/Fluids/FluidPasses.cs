@@ -397,29 +397,39 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static void Advect(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, float h, ref FluidPassCounters counters)
         {
-            float maxSpeed = c.Parameters.MaxSpeed;
             for (int i = start; i < end; i++)
             {
                 float3 v = p.Velocities[i];
-                float3 x = p.Positions[i];
-                s.Previous[i] = x;
                 if (!math.all(math.isfinite(v)))
                 {
+                    s.Previous[i] = p.Positions[i];
                     p.Velocities[i] = float3.zero;
                     p.Positions[i] = new float3(float.NaN);
                     continue;
                 }
-                float speed2 = math.lengthsq(v);
-                if (speed2 > maxSpeed * maxSpeed)
-                {
-                    v *= maxSpeed / math.sqrt(speed2);
-                    counters.SpeedClamped++;
-                }
-                x += h * v;
-                FluidBoundary.ClampToDomain(c, ref x, ref v);
-                p.Positions[i] = x;
-                p.Velocities[i] = v;
+                Move(c, p, s, i, v, h, ref counters);
             }
+        }
+
+        /// <summary>
+        /// Keeps the start position in <see cref="FluidScratch.Previous"/>, bounds the speed (counted), moves the particle
+        /// by h·v and keeps it in the domain box: the shared end of <see cref="Advect"/> and <see cref="Predict"/>.
+        /// </summary>
+        static void Move(in FluidConstants c, FluidParticles p, FluidScratch s, int i, float3 v, float h, ref FluidPassCounters counters)
+        {
+            float maxSpeed = c.Parameters.MaxSpeed;
+            float3 x = p.Positions[i];
+            s.Previous[i] = x;
+            float speed2 = math.lengthsq(v);
+            if (speed2 > maxSpeed * maxSpeed)
+            {
+                v *= maxSpeed / math.sqrt(speed2);
+                counters.SpeedClamped++;
+            }
+            x += h * v;
+            FluidBoundary.ClampToDomain(c, ref x, ref v);
+            p.Positions[i] = x;
+            p.Velocities[i] = v;
         }
 
         /// <summary>
@@ -516,23 +526,8 @@ namespace SoftBodyDynamics.Solvers
         public static void Predict(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, float h, ref FluidPassCounters counters)
         {
             float3 g = c.Parameters.Gravity;
-            float maxSpeed = c.Parameters.MaxSpeed;
             for (int i = start; i < end; i++)
-            {
-                float3 x = p.Positions[i];
-                float3 v = p.Velocities[i] + h * g;
-                s.Previous[i] = x;
-                float speed2 = math.lengthsq(v);
-                if (speed2 > maxSpeed * maxSpeed)
-                {
-                    v *= maxSpeed / math.sqrt(speed2);
-                    counters.SpeedClamped++;
-                }
-                x += h * v;
-                FluidBoundary.ClampToDomain(c, ref x, ref v);
-                p.Positions[i] = x;
-                p.Velocities[i] = v;
-            }
+                Move(c, p, s, i, p.Velocities[i] + h * g, h, ref counters);
         }
     }
 }
