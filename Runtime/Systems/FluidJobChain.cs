@@ -10,7 +10,7 @@ namespace SoftBodyDynamics
     /// <see cref="FluidPassJob.Batches"/> batches in parallel (the sort as one). A .NET test checks that the batch split
     /// leaves the bits unchanged.
     /// </summary>
-    static class FluidJobChain
+    public static class FluidJobChain
     {
         /// <summary>Batches for a fluid of <paramref name="budget"/> particles: about 1024 particles each, 1–64.</summary>
         public static int BatchCount(int budget) => System.Math.Max(1, System.Math.Min(64, budget / 1024));
