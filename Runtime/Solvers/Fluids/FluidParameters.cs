@@ -45,7 +45,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Akinci et al. 2013: coefficient γ of the cohesion and curvature forces, aᵢ = −γ·Σⱼ Kᵢⱼ(m·C(r)·r̂ + nᵢ − nⱼ) (the
         /// paper's γ: it multiplies a mass density for cohesion and a dimensionless normal difference for curvature, so it
-        /// has no single SI unit). 0 = off; about 0.1–1 for water-like drops at centimetre spacing.
+        /// has no single SI unit). 0 = off. The droplet study uses 0.2 at 1 cm spacing, which squeezes the drop (Documentation~/fluids.md).
         /// </summary>
         public float SurfaceTension;
         /// <summary>Uniform acceleration on every particle: gravity times the fluid's gravity scale (m/s²).</summary>
