@@ -251,7 +251,7 @@ namespace SoftBodyDynamics.Solvers
                         float scale = pi + pressures[j];
                         // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
                         float approach = math.min(math.dot(vi - velocities[j], rij), 0f);
-                        scale -= alphaCh / (rhoi + densities[j]) * approach / (r2 + eta2);
+                        scale -= alphaCh * approach / ((rhoi + densities[j]) * (r2 + eta2));
                         if (r > minDistance)
                         {
                             // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
