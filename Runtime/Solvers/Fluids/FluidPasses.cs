@@ -97,9 +97,8 @@ namespace SoftBodyDynamics.Solvers
             int start, int end, ref FluidPassCounters counters)
         {
             SphKernels k = c.Kernels;
-            float m = c.Mass, rho0 = c.Parameters.RestDensity, h2 = k.H2;
+            float rho0 = c.Parameters.RestDensity, h2 = k.H2;
             bool tait = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
-            float maxRatio = c.Parameters.MaxDensityRatio;
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions;
             ReadOnlySpan<int> cellStart = s.CellStart;
@@ -130,13 +129,7 @@ namespace SoftBodyDynamics.Solvers
                     }
                 }
                 s.NeighbourCounts[i] = found;
-                FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
-                float rho = m * k.Poly6Coefficient * sum + rho0 * wall;
-                s.Densities[i] = rho;
-                float ratio = rho / rho0;
-                counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
-                if (ratio > maxRatio)
-                    counters.OverCompressed++;
+                float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters);
                 if (tait)
                 {
                     float rc = math.max(rho, rho0);
@@ -155,9 +148,7 @@ namespace SoftBodyDynamics.Solvers
         public static void DensityFromNeighbours(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p,
             FluidScratch s, int start, int end, ref FluidPassCounters counters)
         {
-            SphKernels k = c.Kernels;
-            float m = c.Mass, rho0 = c.Parameters.RestDensity, h2 = k.H2;
-            float maxRatio = c.Parameters.MaxDensityRatio;
+            float h2 = c.Kernels.H2;
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions;
             ReadOnlySpan<int> neighbours = s.Neighbours;
@@ -174,14 +165,26 @@ namespace SoftBodyDynamics.Solvers
                     if (q > 0f)
                         sum += q * q * q;
                 }
-                FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
-                float rho = m * k.Poly6Coefficient * sum + rho0 * wall;
-                s.Densities[i] = rho;
-                float ratio = rho / rho0;
-                counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
-                if (ratio > maxRatio)
-                    counters.OverCompressed++;
+                StoreDensity(c, colliders, s, i, xi, sum, ref counters);
             }
+        }
+
+        /// <summary>
+        /// ρᵢ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored, with the density ratio counted against the
+        /// bound; returns ρᵢ. The end of <see cref="Density"/> and <see cref="DensityFromNeighbours"/>.
+        /// </summary>
+        static float StoreDensity(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidScratch s, int i, float3 xi,
+            float kernelSum, ref FluidPassCounters counters)
+        {
+            float rho0 = c.Parameters.RestDensity;
+            FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
+            float rho = c.Mass * c.Kernels.Poly6Coefficient * kernelSum + rho0 * wall;
+            s.Densities[i] = rho;
+            float ratio = rho / rho0;
+            counters.MaxDensityRatio = math.max(counters.MaxDensityRatio, ratio);
+            if (ratio > c.Parameters.MaxDensityRatio)
+                counters.OverCompressed++;
+            return rho;
         }
 
         /// <summary>Akinci et al. 2013 surface normals nᵢ = h·Σⱼ (m/ρⱼ)·∇W(xᵢ − xⱼ) (eq. 4) into <see cref="FluidScratch.VectorsB"/>.</summary>
