@@ -2,6 +2,7 @@ using SoftBodyDynamics.Solvers;
 using Unity.Burst;
 using Unity.Collections;
 using Unity.Entities;
+using Unity.Jobs;
 using Unity.Mathematics;
 using Unity.Transforms;
 
@@ -12,8 +13,10 @@ namespace SoftBodyDynamics
     /// the .NET tests call, through <see cref="FluidSystemFrame"/>). Runs only while some entity has
     /// <see cref="FluidSettings"/>: a scene without a fluid pays nothing for it.
     /// <list type="bullet">
-    /// <item>Packed storage: one Burst job per fluid (fluids in parallel; inside a fluid the passes run single-threaded in
-    /// this version) over the fluid entity's buffers.</item>
+    /// <item>Packed storage: drains and taps on the main thread, then the step's substeps as a chain of parallel Burst pass
+    /// jobs over the fluid entity's buffers (<see cref="FluidJobChain"/>, <see cref="FluidPassJob"/>: about 1024 particles per
+    /// batch, the same bits for any worker count), one fluid after the other; the system waits for each chain (the main
+    /// thread helps run it).</item>
     /// <item>Entities storage: on the main thread (Burst), per fluid: the particle entities are gathered into the fluid's
     /// buffers (entities destroyed by gameplay since the last step are gone and counted as killed), the frame runs,
     /// every surviving entity gets its <see cref="FluidParticle"/> and <see cref="LocalTransform"/> back in one
@@ -46,27 +49,76 @@ namespace SoftBodyDynamics
         public void OnUpdate(ref SystemState state)
         {
             float dt = SystemAPI.Time.DeltaTime;
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
-            NativeArray<FluidTap> taps = m_Taps.ToComponentDataArray<FluidTap>(Allocator.TempJob);
-            NativeArray<Entity> tapEntities = m_Taps.ToEntityArray(Allocator.TempJob);
-            NativeArray<FluidDrainVolume> drains = m_Drains.ToComponentDataArray<FluidDrainVolume>(Allocator.TempJob);
-
-            // Entity storage first, on the main thread: it changes the world's structure.
             state.CompleteDependency();
+            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+            NativeArray<FluidTap> taps = m_Taps.ToComponentDataArray<FluidTap>(Allocator.Temp);
+            NativeArray<Entity> tapEntities = m_Taps.ToEntityArray(Allocator.Temp);
+            NativeArray<FluidDrainVolume> drains = m_Drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp);
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
+
+            // Entities storage first, on the main thread: it changes the world's structure.
             for (int f = 0; f < fluids.Length; f++)
             {
                 FluidSettings settings = state.EntityManager.GetComponentData<FluidSettings>(fluids[f]);
                 if (settings.Storage == FluidStorage.Entities)
                     StepEntityFluid(ref state, fluids[f], settings, colliders, taps, tapEntities, drains, dt);
             }
-            fluids.Dispose();
 
-            new PackedStepJob { Colliders = colliders, Taps = taps, TapEntities = tapEntities, Drains = drains, DeltaTime = dt }.ScheduleParallel();
-            colliders.Dispose(state.Dependency);
-            taps.Dispose(state.Dependency);
-            tapEntities.Dispose(state.Dependency);
-            drains.Dispose(state.Dependency);
+            // Packed storage, one fluid at a time: drains and taps on the main thread, then the step's substeps as a chain
+            // of parallel pass jobs, completed before the next fluid (the main thread helps run them while it waits).
+            EntityManager m = state.EntityManager;
+            for (int f = 0; f < fluids.Length; f++)
+            {
+                Entity fluid = fluids[f];
+                FluidSettings settings = m.GetComponentData<FluidSettings>(fluid);
+                if (settings.Storage != FluidStorage.Packed)
+                    continue;
+                FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
+                FluidEntityArrays a = Arrays(m, fluid);
+                if (FluidSystemFrame.Prepare(settings, ref runtime, a, out FluidConstants constants))
+                    StepPackedFluid(fluid, settings, constants, ref runtime, Arrays(m, fluid), colliders, taps, tapEntities, drains, dt);
+                m.SetComponentData(fluid, runtime);
+            }
+            fluids.Dispose();
+            colliders.Dispose();
+            taps.Dispose();
+            tapEntities.Dispose();
+            drains.Dispose();
+        }
+
+        /// <summary>Drains, taps, then the substeps as a job chain (<see cref="FluidJobChain"/>), completed here.</summary>
+        static void StepPackedFluid(Entity fluid, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime,
+            FluidEntityArrays a, NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<FluidDrainVolume> drains, float dt)
+        {
+            FluidFrameReport frame = FluidSystemFrame.DrainAndEmit(fluid, settings, constants, ref runtime, a, colliders, taps, tapEntities, drains, dt);
+            FluidSolver.Plan plan = FluidSolver.Begin(constants, dt, FluidSystemFrame.Particles(a), ref runtime.Status);
+            int batches = FluidJobChain.BatchCount(settings.Budget);
+            var count = new NativeArray<int>(1, Allocator.TempJob);
+            count[0] = runtime.Status.Count;
+            var counters = new NativeArray<FluidPassCounters>(batches, Allocator.TempJob);
+            var job = new FluidPassJob
+            {
+                Constants = constants,
+                Batches = batches,
+                Colliders = colliders.Reinterpret<ColliderShape>(),
+                Positions = a.Positions.Reinterpret<float3>().AsNativeArray(),
+                Velocities = a.Velocities.Reinterpret<float3>().AsNativeArray(),
+                Ages = a.Ages.Reinterpret<float>().AsNativeArray(),
+                Lifetimes = a.Lifetimes.Reinterpret<float>().AsNativeArray(),
+                Attributes = a.Attributes.Reinterpret<float>().AsNativeArray(),
+                Ids = a.Ids.Reinterpret<int>().AsNativeArray(),
+                ScratchInts = a.ScratchInts.Reinterpret<int>().AsNativeArray(),
+                ScratchFloats = a.ScratchFloats.Reinterpret<float>().AsNativeArray(),
+                ScratchVectors = a.ScratchVectors.Reinterpret<float3>().AsNativeArray(),
+                Count = count,
+                Counters = counters,
+            };
+            FluidJobChain.Schedule(job, plan, default).Complete();
+            frame.Step = FluidSolver.Finish(plan, FluidJobChain.Sum(counters), dt, count[0], ref runtime.Status);
+            FluidSystemFrame.Close(fluid, ref runtime, frame);
+            count.Dispose();
+            counters.Dispose();
         }
 
         static FluidEntityArrays Arrays(EntityManager m, Entity fluid) => new FluidEntityArrays
@@ -133,34 +185,6 @@ namespace SoftBodyDynamics
             data.Dispose();
             transforms.Dispose();
             entities.Dispose();
-        }
-
-        [BurstCompile]
-        partial struct PackedStepJob : IJobEntity
-        {
-            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
-            [ReadOnly] public NativeArray<FluidTap> Taps;
-            [ReadOnly] public NativeArray<Entity> TapEntities;
-            [ReadOnly] public NativeArray<FluidDrainVolume> Drains;
-            /// <summary>Fixed time step (s).</summary>
-            public float DeltaTime;
-
-            void Execute(Entity entity, in FluidSettings settings, ref FluidRuntime runtime,
-                DynamicBuffer<FluidPosition> positions, DynamicBuffer<FluidVelocity> velocities, DynamicBuffer<FluidAge> ages,
-                DynamicBuffer<FluidLifetime> lifetimes, DynamicBuffer<FluidAttribute> attributes, DynamicBuffer<FluidId> ids,
-                DynamicBuffer<FluidScratchInt> scratchInts, DynamicBuffer<FluidScratchFloat> scratchFloats,
-                DynamicBuffer<FluidScratchVector> scratchVectors, DynamicBuffer<FluidTapRuntime> tapRuntime)
-            {
-                if (settings.Storage != FluidStorage.Packed)
-                    return;
-                var a = new FluidEntityArrays
-                {
-                    Positions = positions, Velocities = velocities, Ages = ages, Lifetimes = lifetimes, Attributes = attributes, Ids = ids,
-                    ScratchInts = scratchInts, ScratchFloats = scratchFloats, ScratchVectors = scratchVectors, Taps = tapRuntime,
-                };
-                if (FluidSystemFrame.Prepare(settings, ref runtime, a, out FluidConstants constants))
-                    FluidSystemFrame.Run(entity, settings, constants, ref runtime, a, Colliders, Taps, TapEntities, Drains, DeltaTime);
-            }
         }
     }
 }

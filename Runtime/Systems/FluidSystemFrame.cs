@@ -22,9 +22,9 @@ namespace SoftBodyDynamics
     }
 
     /// <summary>
-    /// One fluid's frame on ECS data, shared by the packed-storage job and the entity-storage path: sizes the buffers on
-    /// first use, collects this fluid's taps (with their state from the fluid's tap buffer) and drains, runs the taps'
-    /// prewarm once, then <see cref="FluidFrame.Advance"/>, writes the tap states back and logs what went out of bounds.
+    /// One fluid's frame on ECS data, shared by the packed-storage job chain and the entity-storage path: sizes the
+    /// buffers on first use, runs this fluid's drains and taps (prewarm once), then the solver step (single-threaded for
+    /// Entities storage, <see cref="FluidJobChain"/> for Packed), and logs what went out of bounds.
     /// </summary>
     static class FluidSystemFrame
     {
@@ -45,8 +45,13 @@ namespace SoftBodyDynamics
         public static FluidParticles Particles(FluidEntityArrays a) =>
             FluidEntityBuffers.Particles(a.Positions, a.Velocities, a.Ages, a.Lifetimes, a.Attributes, a.Ids);
 
-        public static void Run(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime, FluidEntityArrays a,
-            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+        /// <summary>
+        /// The frame up to the solver step: this fluid's taps (state from the fluid's tap buffer) and drains; the taps'
+        /// prewarm once (a whole single-threaded frame per prewarm frame); drains mark and taps spawn; tap states are
+        /// written back. Returns the frame report without its step.
+        /// </summary>
+        public static FluidFrameReport DrainAndEmit(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime,
+            FluidEntityArrays a, NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
             NativeArray<FluidDrainVolume> drainVolumes, float dt)
         {
             int budget = math.max(1, settings.Budget);
@@ -76,33 +81,49 @@ namespace SoftBodyDynamics
                 if (drainVolumes[d].Fluid == entity)
                     drains[drainCount++] = drainVolumes[d].Drain;
 
-            var colliderSpan = colliders.Reinterpret<ColliderShape>().AsReadOnlySpan();
             var tapSpan = instances.AsSpan().Slice(0, tapCount);
             var burstSpan = bursts.AsReadOnlySpan().Slice(0, burstCount);
             var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
             if (!runtime.Prewarmed)
             {
-                FluidFrame.Prewarm(constants, colliderSpan, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref runtime.Status);
+                FluidFrame.Prewarm(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), drainSpan, tapSpan, burstSpan, budget, dt,
+                    particles, scratch, ref runtime.Status);
                 runtime.Prewarmed = true;
             }
-            FluidFrameReport report = FluidFrame.Advance(constants, colliderSpan, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch,
-                ref runtime.Status);
+            FluidFrameReport report = FluidFrame.DrainAndEmit(constants, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref runtime.Status);
             for (int t = 0; t < tapCount; t++)
             {
                 FluidTapRuntime r = a.Taps[owners[t]];
                 r.State = instances[t].State;
                 a.Taps[owners[t]] = r;
             }
-            runtime.LastFrame = report;
             instances.Dispose();
             bursts.Dispose();
             owners.Dispose();
             drains.Dispose();
+            return report;
+        }
 
+        /// <summary>Stores the frame report and logs what went out of bounds, naming the fluid.</summary>
+        public static void Close(Entity entity, ref FluidRuntime runtime, in FluidFrameReport report)
+        {
+            runtime.LastFrame = report;
             if (report.Step.Invalid > 0)
                 Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the NaN guard removed {report.Step.Invalid} particle(s) with a non-finite position or velocity.");
             if (report.Step.SubstepsWanted > report.Step.Substeps)
                 Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the CFL limit asked for {report.Step.SubstepsWanted} substeps, capped at {report.Step.Substeps}; lower the speed of sound or raise the substep cap.");
+        }
+
+        /// <summary>A whole frame single-threaded (drains, taps, <see cref="FluidSolver.Step"/>), for Entities storage.</summary>
+        public static void Run(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime, FluidEntityArrays a,
+            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<FluidDrainVolume> drainVolumes, float dt)
+        {
+            FluidFrameReport report = DrainAndEmit(entity, settings, constants, ref runtime, a, colliders, taps, tapEntities, drainVolumes, dt);
+            int budget = math.max(1, settings.Budget);
+            FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
+            report.Step = FluidSolver.Step(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), dt, Particles(a), scratch, ref runtime.Status);
+            Close(entity, ref runtime, report);
         }
     }
 }

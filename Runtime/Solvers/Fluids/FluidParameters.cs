@@ -42,7 +42,11 @@ namespace SoftBodyDynamics.Solvers
         public float SeparationWeight;
         /// <summary>Flocking: rate at which a velocity relaxes toward the neighbours' kernel-weighted mean (XSPH), 1/s. 0 = off.</summary>
         public float AlignmentRate;
-        /// <summary>Akinci et al. 2013: surface tension coefficient γ of the cohesion and curvature forces (m³/(kg·s²)... scaled, see FluidForces). 0 = off.</summary>
+        /// <summary>
+        /// Akinci et al. 2013: coefficient γ of the cohesion and curvature forces, aᵢ = −γ·Σⱼ Kᵢⱼ(m·C(r)·r̂ + nᵢ − nⱼ) (the
+        /// paper's γ: it multiplies a mass density for cohesion and a dimensionless normal difference for curvature, so it
+        /// has no single SI unit). 0 = off. The droplet study uses 0.2 at 1 cm spacing, which squeezes the drop (Documentation~/fluids.md).
+        /// </summary>
         public float SurfaceTension;
         /// <summary>Uniform acceleration on every particle: gravity times the fluid's gravity scale (m/s²).</summary>
         public float3 Gravity;
@@ -50,7 +54,7 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainMin;
         /// <summary>Upper corner of the domain box (m, world).</summary>
         public float3 DomainMax;
-        /// <summary>Fraction of the tangential velocity a wall contact removes per contact (0 = free slip, 1 = no slip).</summary>
+        /// <summary>Coulomb friction coefficient μ of particle–collider contacts (0 = free slip): a contact cancels tangential motion up to μ × its depth.</summary>
         public float WallFriction;
         /// <summary>CFL number λ of the adaptive substep: h·λ / (c₀ + v_max) (weakly compressible) or h·λ / v_max (position-based). Default 0.4.</summary>
         public float CflNumber;

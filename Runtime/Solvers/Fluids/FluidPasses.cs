@@ -251,7 +251,7 @@ namespace SoftBodyDynamics.Solvers
                         float scale = pi + pressures[j];
                         // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
                         float approach = math.min(math.dot(vi - velocities[j], rij), 0f);
-                        scale -= alphaCh / (rhoi + densities[j]) * approach / (r2 + eta2);
+                        scale -= alphaCh * approach / ((rhoi + densities[j]) * (r2 + eta2));
                         if (r > minDistance)
                         {
                             // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
@@ -528,6 +528,69 @@ namespace SoftBodyDynamics.Solvers
             float3 g = c.Parameters.Gravity;
             for (int i = start; i < end; i++)
                 Move(c, p, s, i, p.Velocities[i] + h * g, h, ref counters);
+        }
+
+        /// <summary>
+        /// Colliders for slots [start, end): <see cref="ContactProjection.Project"/> with the particles as spheres of the
+        /// wall distance, no bounce, Coulomb friction <see cref="FluidParameters.WallFriction"/>, starting from
+        /// <see cref="FluidScratch.Previous"/> (contact normals go to <see cref="FluidScratch.VectorsA"/>).
+        /// </summary>
+        public static void Collide(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            int start, int end, float h, ref FluidPassCounters counters)
+        {
+            if (colliders.Length == 0 || end <= start)
+                return;
+            var settings = new ContactProjection.Settings
+            {
+                Radius = c.WallDistance,
+                Friction = c.Parameters.WallFriction,
+                Restitution = 0f,
+                BounceThreshold = float.PositiveInfinity,
+                MaxDepenetration = c.Parameters.MaxSpeed * h,
+                Origin = float3.zero,
+            };
+            int n = end - start;
+            counters.Contacts += ContactProjection.Project(s.Previous.Slice(start, n), p.Positions.Slice(start, n),
+                p.Velocities.Slice(start, n), s.VectorsA.Slice(start, n), colliders, settings, h);
+        }
+
+        /// <summary>
+        /// Runs <paramref name="pass"/> on batch <paramref name="batch"/> of <paramref name="batches"/> equal ranges of the
+        /// <paramref name="count"/> live particles (the sort runs whole on batch 0 and updates the count). The one dispatcher
+        /// both the single-threaded step and the ECS jobs call.
+        /// </summary>
+        public static void Run(FluidPass pass, in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            int batch, int batches, ref int count, float h, ref FluidPassCounters counters)
+        {
+            if (pass == FluidPass.Sort || pass == FluidPass.SortWithPrevious)
+            {
+                if (batch == 0)
+                    count = FluidSolver.SortParticles(c, p, s, count, pass == FluidPass.SortWithPrevious, ref counters);
+                return;
+            }
+            int start = (int)((long)count * batch / batches), end = (int)((long)count * (batch + 1) / batches);
+            int n = end - start;
+            switch (pass)
+            {
+                case FluidPass.Density: Density(c, colliders, p, s, start, end, ref counters); break;
+                case FluidPass.DensityFromNeighbours: DensityFromNeighbours(c, colliders, p, s, start, end, ref counters); break;
+                case FluidPass.SurfaceNormals: SurfaceNormals(c, p, s, start, end); break;
+                case FluidPass.Forces: Forces(c, colliders, p, s, s.VectorsA, start, end, h, true); break;
+                case FluidPass.CohesionForces: Forces(c, colliders, p, s, s.VectorsA, start, end, h, false); break;
+                case FluidPass.CopyAToVelocities: s.VectorsA.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;
+                case FluidPass.CopyVelocitiesToA: p.Velocities.Slice(start, n).CopyTo(s.VectorsA.Slice(start, n)); break;
+                case FluidPass.ViscosityAToB: ViscosityIteration(c, p, s, s.VectorsA, s.VectorsB, start, end, h); break;
+                case FluidPass.ViscosityBToA: ViscosityIteration(c, p, s, s.VectorsB, s.VectorsA, start, end, h); break;
+                case FluidPass.CopyBToVelocities: s.VectorsB.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;
+                case FluidPass.Alignment: Alignment(c, p, s, s.VectorsA, start, end, h); break;
+                case FluidPass.Advect: Advect(c, p, s, start, end, h, ref counters); break;
+                case FluidPass.Predict: Predict(c, p, s, start, end, h, ref counters); break;
+                case FluidPass.Lambda: Lambda(c, colliders, p, s, start, end); break;
+                case FluidPass.Correction: Correction(c, colliders, p, s, start, end); break;
+                case FluidPass.ApplyCorrection: ApplyCorrection(c, p, s, start, end); break;
+                case FluidPass.VelocityFromPositions: VelocityFromPositions(p, s, start, end, h); break;
+                case FluidPass.Collide: Collide(c, colliders, p, s, start, end, h, ref counters); break;
+            }
         }
     }
 }

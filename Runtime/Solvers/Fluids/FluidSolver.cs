@@ -13,6 +13,8 @@ namespace SoftBodyDynamics.Solvers
     /// <item>position-based: predict → keys → sort → (density → λ → Δx) × iterations → v = Δx/h → cohesion →
     /// implicit viscosity → alignment → colliders.</item>
     /// </list>
+    /// The list of passes is <see cref="FluidSubstepPasses.Write"/>, run by <see cref="FluidPasses.Run"/> here and in the
+    /// ECS job chain.
     /// </summary>
     public static class FluidSolver
     {
@@ -41,18 +43,28 @@ namespace SoftBodyDynamics.Solvers
             return new int2(wanted, math.min(wanted, c.Parameters.MaxSubsteps));
         }
 
-        /// <summary>Advances the fluid by <paramref name="dt"/> seconds (see the class comment).</summary>
-        /// <param name="colliders">Static colliders in world space (the soft bodies' collider shapes).</param>
-        public static FluidStepReport Step(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float dt,
-            FluidParticles p, FluidScratch s, ref FluidStatus status)
+        /// <summary>The substeps of one step, fixed at its start (<see cref="Begin"/>).</summary>
+        public struct Plan
         {
-            var report = new FluidStepReport();
+            /// <summary>Substeps to run.</summary>
+            public int Substeps;
+            /// <summary>Substeps the CFL limit asked for (above <see cref="Substeps"/> when capped).</summary>
+            public int SubstepsWanted;
+            /// <summary>Substep length h = dt / Substeps (s); 0 when the step does nothing.</summary>
+            public float H;
+        }
+
+        /// <summary>
+        /// Starts a step of <paramref name="dt"/>: ages the live particles and fixes the substeps from the fastest
+        /// speed (a non-finite one belongs to a particle the first sort removes and does not count). The substeps are
+        /// then the passes of <see cref="FluidSubstepPasses.Write"/> (here or as jobs), and <see cref="Finish"/> closes the step.
+        /// </summary>
+        public static Plan Begin(in FluidConstants c, float dt, FluidParticles p, ref FluidStatus status)
+        {
             int count = math.clamp(status.Count, 0, p.Capacity);
+            status.Count = count;
             if (!(dt > 0f) || !math.isfinite(dt))
-            {
-                report.Count = count;
-                return report;
-            }
+                return new Plan();
             for (int i = 0; i < count; i++)
                 p.Ages[i] += dt;
             float maxSpeed = 0f;
@@ -62,34 +74,60 @@ namespace SoftBodyDynamics.Solvers
                 if (v2 > maxSpeed)
                     maxSpeed = v2;
             }
-            // A non-finite speed belongs to a particle the first sort removes; it must not set the substep.
             maxSpeed = math.isfinite(maxSpeed) ? math.min(math.sqrt(maxSpeed), c.Parameters.MaxSpeed) : c.Parameters.MaxSpeed;
             int2 substeps = Substeps(c, maxSpeed, dt);
-            report.SubstepsWanted = substeps.x;
-            report.Substeps = substeps.y;
-            float h = dt / substeps.y;
-            var counters = new FluidPassCounters();
-            for (int k = 0; k < substeps.y; k++)
-            {
-                count = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible
-                    ? WeaklyCompressibleSubstep(c, colliders, p, s, count, h, ref counters)
-                    : PositionBasedSubstep(c, colliders, p, s, count, h, ref counters);
-            }
+            return new Plan { Substeps = substeps.y, SubstepsWanted = substeps.x, H = dt / substeps.y };
+        }
+
+        /// <summary>Closes a step: the live count, time and removal totals into the status, the counters into the report.</summary>
+        public static FluidStepReport Finish(in Plan plan, in FluidPassCounters counters, float dt, int count, ref FluidStatus status)
+        {
             status.Count = count;
-            status.Time += dt;
+            if (plan.Substeps > 0)
+                status.Time += dt;
             status.Killed += counters.Killed;
             status.Expired += counters.Expired;
             status.Invalid += counters.Invalid;
-            report.Killed = counters.Killed;
-            report.Expired = counters.Expired;
-            report.Invalid = counters.Invalid;
-            report.SpeedClamped = counters.SpeedClamped;
-            report.OverCompressed = counters.OverCompressed;
-            report.NeighbourOverflow = counters.NeighbourOverflow;
-            report.MaxDensityRatio = counters.MaxDensityRatio;
-            report.Contacts = counters.Contacts;
-            report.Count = count;
-            return report;
+            return new FluidStepReport
+            {
+                Substeps = plan.Substeps,
+                SubstepsWanted = plan.SubstepsWanted,
+                Killed = counters.Killed,
+                Expired = counters.Expired,
+                Invalid = counters.Invalid,
+                SpeedClamped = counters.SpeedClamped,
+                OverCompressed = counters.OverCompressed,
+                NeighbourOverflow = counters.NeighbourOverflow,
+                MaxDensityRatio = counters.MaxDensityRatio,
+                Contacts = counters.Contacts,
+                Count = count,
+            };
+        }
+
+        /// <summary>Advances the fluid by <paramref name="dt"/> seconds (see the class comment).</summary>
+        /// <param name="colliders">Static colliders in world space (the soft bodies' collider shapes).</param>
+        public static FluidStepReport Step(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float dt,
+            FluidParticles p, FluidScratch s, ref FluidStatus status) => Step(c, colliders, dt, p, s, ref status, 1);
+
+        /// <summary>
+        /// As <see cref="Step(in FluidConstants, ReadOnlySpan{ColliderShape}, float, FluidParticles, FluidScratch, ref FluidStatus)"/>,
+        /// with every range pass run in <paramref name="batches"/> equal batches, one after the other: the split the ECS job
+        /// chain makes. The result has the same bits for every batch count.
+        /// </summary>
+        public static FluidStepReport Step(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float dt,
+            FluidParticles p, FluidScratch s, ref FluidStatus status, int batches)
+        {
+            Plan plan = Begin(c, dt, p, ref status);
+            int count = status.Count;
+            var counters = new FluidPassCounters();
+            Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
+            int passCount = FluidSubstepPasses.Write(c.Parameters, colliders.Length > 0, passes);
+            batches = math.max(1, batches);
+            for (int k = 0; k < plan.Substeps; k++)
+                for (int q = 0; q < passCount; q++)
+                    for (int b = 0; b < batches; b++)
+                        FluidPasses.Run(passes[q], c, colliders, p, s, b, batches, ref count, plan.H, ref counters);
+            return Finish(plan, counters, dt, count, ref status);
         }
 
         /// <summary>Keys, sort and the permutation of every particle array (and <see cref="FluidScratch.Previous"/> when asked). Returns the live count.</summary>
@@ -106,90 +144,6 @@ namespace SoftBodyDynamics.Solvers
             FluidPasses.Permute(p.Attributes, s.Floats, s.Order, live);
             FluidPasses.Permute(p.Ids, s.Ints, s.Order, live);
             return live;
-        }
-
-        static int WeaklyCompressibleSubstep(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p,
-            FluidScratch s, int count, float h, ref FluidPassCounters counters)
-        {
-            count = SortParticles(c, p, s, count, false, ref counters);
-            FluidPasses.Density(c, colliders, p, s, 0, count, ref counters);
-            if (c.Parameters.Cohesion == FluidCohesionModel.Akinci && c.Parameters.SurfaceTension > 0f)
-                FluidPasses.SurfaceNormals(c, p, s, 0, count);
-            FluidPasses.Forces(c, colliders, p, s, s.VectorsA, 0, count, h, true);
-            s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
-            SmoothVelocities(c, p, s, count, h);
-            FluidPasses.Advect(c, p, s, 0, count, h, ref counters);
-            Collide(c, colliders, p, s, count, h, ref counters);
-            return count;
-        }
-
-        static int PositionBasedSubstep(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p,
-            FluidScratch s, int count, float h, ref FluidPassCounters counters)
-        {
-            FluidPasses.Predict(c, p, s, 0, count, h, ref counters);
-            count = SortParticles(c, p, s, count, true, ref counters);
-            for (int it = 0; it < c.Parameters.PressureIterations; it++)
-            {
-                // The neighbour lists come from the first density pass; later ones refresh only the densities.
-                if (it == 0)
-                    FluidPasses.Density(c, colliders, p, s, 0, count, ref counters);
-                else
-                    FluidPasses.DensityFromNeighbours(c, colliders, p, s, 0, count, ref counters);
-                FluidPasses.Lambda(c, colliders, p, s, 0, count);
-                FluidPasses.Correction(c, colliders, p, s, 0, count);
-                FluidPasses.ApplyCorrection(c, p, s, 0, count);
-            }
-            FluidPasses.VelocityFromPositions(p, s, 0, count, h);
-            bool cohesion = c.Parameters.Cohesion != FluidCohesionModel.None;
-            if (cohesion)
-            {
-                if (c.Parameters.Cohesion == FluidCohesionModel.Akinci)
-                    FluidPasses.SurfaceNormals(c, p, s, 0, count);
-                FluidPasses.Forces(c, colliders, p, s, s.VectorsA, 0, count, h, false);
-                s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
-            }
-            SmoothVelocities(c, p, s, count, h);
-            Collide(c, colliders, p, s, count, h, ref counters);
-            return count;
-        }
-
-        /// <summary>Implicit viscosity (Jacobi iterations, ping-pong through the two vector scratch arrays) and alignment.</summary>
-        static void SmoothVelocities(in FluidConstants c, FluidParticles p, FluidScratch s, int count, float h)
-        {
-            int iterations = c.Parameters.Viscosity > 0f ? c.Parameters.ViscosityIterations : 0;
-            if (iterations > 0)
-            {
-                p.Velocities.Slice(0, count).CopyTo(s.VectorsA);
-                for (int it = 0; it < iterations; it++)
-                {
-                    bool even = (it & 1) == 0;
-                    FluidPasses.ViscosityIteration(c, p, s, even ? s.VectorsA : s.VectorsB, even ? s.VectorsB : s.VectorsA, 0, count, h);
-                }
-                ((iterations & 1) == 1 ? s.VectorsB : s.VectorsA).Slice(0, count).CopyTo(p.Velocities);
-            }
-            if (c.Parameters.Cohesion == FluidCohesionModel.Flocking && c.Parameters.AlignmentRate > 0f)
-            {
-                FluidPasses.Alignment(c, p, s, s.VectorsA, 0, count, h);
-                s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
-            }
-        }
-
-        static void Collide(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int count,
-            float h, ref FluidPassCounters counters)
-        {
-            if (colliders.Length == 0 || count == 0)
-                return;
-            var settings = new ContactProjection.Settings
-            {
-                Radius = c.WallDistance,
-                Friction = c.Parameters.WallFriction,
-                Restitution = 0f,
-                BounceThreshold = float.PositiveInfinity,
-                MaxDepenetration = c.Parameters.MaxSpeed * h,
-                Origin = float3.zero,
-            };
-            counters.Contacts += ContactProjection.Project(s.Previous.Slice(0, count), p.Positions.Slice(0, count),
-                p.Velocities.Slice(0, count), s.VectorsA.Slice(0, count), colliders, settings, h);
         }
     }
 }

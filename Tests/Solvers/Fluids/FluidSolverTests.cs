@@ -241,34 +241,66 @@ namespace SoftBodyDynamics.Tests.Solvers
                 FluidTestScenes.Step(c, b, 1f / 60f);
             }
             CollectionAssert.AreEqual(a.Positions, b.Positions);
-            // One substep of h through the passes in 7 uneven batches, against FluidSolver.Step with dt = h.
-            float h = 0.5f * FluidSolver.CflSubstep(c, 3f, 1f);
-            FluidSolver.Step(c, default, h, a.Particles, a.Scratch, ref a.Status);
-            FluidParticles pb = b.Particles;
-            FluidScratch sb = b.Scratch;
-            int n = b.Status.Count;
-            for (int i = 0; i < n; i++)
-                pb.Ages[i] += h;
-            var counters = new FluidPassCounters();
-            n = FluidSolver.SortParticles(c, pb, sb, n, false, ref counters);
-            int[] cuts = { 0, 1, 50, 51, 200, 333, 500, n };
-            void Batches(Action<int, int> pass) { for (int k = 0; k + 1 < cuts.Length; k++) pass(Math.Min(cuts[k], n), Math.Min(cuts[k + 1], n)); }
-            Batches((s, e) => { var k = new FluidPassCounters(); FluidPasses.Density(c, default, b.Particles, b.Scratch, s, e, ref k); });
-            Batches((s, e) => FluidPasses.Forces(c, default, b.Particles, b.Scratch, b.VectorsA, s, e, h, true));
-            Array.Copy(b.VectorsA, b.Velocities, n);
-            Array.Copy(b.Velocities, b.VectorsA, n);
-            Batches((s, e) => FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.VectorsA, b.VectorsB, s, e, h));
-            Batches((s, e) => FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.VectorsB, b.VectorsA, s, e, h));
-            Array.Copy(b.VectorsA, b.Velocities, n);
-            Batches((s, e) => { var k = new FluidPassCounters(); FluidPasses.Advect(c, b.Particles, b.Scratch, s, e, h, ref k); });
-            b.Status.Count = n;
+            // The next 10 frames with every pass split into 7 batches (as the ECS job chain splits it), against one batch.
+            for (int f = 0; f < 10; f++)
+            {
+                FluidSolver.Step(c, default, 1f / 60f, a.Particles, a.Scratch, ref a.Status);
+                FluidSolver.Step(c, default, 1f / 60f, b.Particles, b.Scratch, ref b.Status, 7);
+            }
             Assert.AreEqual(a.Status.Count, b.Status.Count);
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < a.Status.Count; i++)
             {
                 Assert.AreEqual(a.Ids[i], b.Ids[i]);
                 Assert.AreEqual(a.Positions[i], b.Positions[i], $"slot {i}");
                 Assert.AreEqual(a.Velocities[i], b.Velocities[i], $"slot {i}");
             }
+        }
+
+        [TestCase(FluidSolverKind.PositionBased, FluidCohesionModel.Akinci)]
+        [TestCase(FluidSolverKind.WeaklyCompressible, FluidCohesionModel.Flocking)]
+        public void BatchSplit_LeavesTheBitsUnchanged_WithCollidersAndCohesion(FluidSolverKind solver, FluidCohesionModel cohesion)
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.3f, 0.4f, 0.3f));
+            p.Solver = solver;
+            p.Cohesion = cohesion;
+            p.CohesionWeight = 30f;
+            p.AlignmentRate = 2f;
+            p.SurfaceTension = 0.1f;
+            p.ViscosityIterations = 3;
+            var c = new FluidConstants(p);
+            var colliders = new[] { ColliderShape.Sphere(new float3(0.15f, 0.05f, 0.15f), 0.05f) };
+            FluidBuffers a = FluidTestScenes.Block(c, 800, new float3(0.05f, 0.15f, 0.05f), new float3(0.25f, 0.3f, 0.2f));
+            FluidBuffers b = FluidTestScenes.Block(c, 800, new float3(0.05f, 0.15f, 0.05f), new float3(0.25f, 0.3f, 0.2f));
+            for (int f = 0; f < 15; f++)
+            {
+                FluidSolver.Step(c, colliders, 1f / 60f, a.Particles, a.Scratch, ref a.Status, 1);
+                FluidSolver.Step(c, colliders, 1f / 60f, b.Particles, b.Scratch, ref b.Status, 5);
+            }
+            Assert.AreEqual(a.Status.Count, b.Status.Count);
+            CollectionAssert.AreEqual(a.Positions, b.Positions);
+            CollectionAssert.AreEqual(a.Velocities, b.Velocities);
+        }
+
+        [Test]
+        public void ZeroCohesionWeights_RunNoCohesionPass()
+        {
+            // Flocking with every weight 0 must give the bits of no cohesion at all (the pass is skipped, not run with zeros).
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
+            FluidParameters q = p;
+            q.Cohesion = FluidCohesionModel.Flocking;
+            var cp = new FluidConstants(p);
+            var cq = new FluidConstants(q);
+            FluidBuffers a = FluidTestScenes.Block(cp, 500, float3.zero, new float3(0.2f, 0.1f, 0.2f));
+            FluidBuffers b = FluidTestScenes.Block(cq, 500, float3.zero, new float3(0.2f, 0.1f, 0.2f));
+            for (int f = 0; f < 10; f++)
+            {
+                FluidTestScenes.Step(cp, a, 1f / 60f);
+                FluidTestScenes.Step(cq, b, 1f / 60f);
+            }
+            CollectionAssert.AreEqual(a.Positions, b.Positions);
+            var passes = new FluidPass[FluidSubstepPasses.MaxPasses];
+            int n = FluidSubstepPasses.Write(cq.Parameters, false, passes);
+            Assert.IsFalse(Array.IndexOf(passes, FluidPass.Alignment, 0, n) >= 0 || Array.IndexOf(passes, FluidPass.SurfaceNormals, 0, n) >= 0);
         }
 
         [Test]

@@ -42,6 +42,15 @@ namespace SoftBodyDynamics.Solvers
             Span<FluidTapInstance> taps, ReadOnlySpan<FluidTapBurst> bursts, int budget, float dt, FluidParticles p, FluidScratch s,
             ref FluidStatus status)
         {
+            FluidFrameReport report = DrainAndEmit(c, drains, taps, bursts, budget, dt, p, s, ref status);
+            report.Step = FluidSolver.Step(c, colliders, dt, p, s, ref status);
+            return report;
+        }
+
+        /// <summary>The part of <see cref="Advance"/> before the solver step: drains mark, taps spawn (report without <see cref="FluidFrameReport.Step"/>).</summary>
+        public static FluidFrameReport DrainAndEmit(in FluidConstants c, ReadOnlySpan<FluidDrain> drains, Span<FluidTapInstance> taps,
+            ReadOnlySpan<FluidTapBurst> bursts, int budget, float dt, FluidParticles p, FluidScratch s, ref FluidStatus status)
+        {
             var report = new FluidFrameReport();
             report.Drained = FluidDrain.Apply(drains, p, math.min(status.Count, p.Capacity));
             for (int t = 0; t < taps.Length; t++)
@@ -54,7 +63,6 @@ namespace SoftBodyDynamics.Solvers
                 report.Dropped += e.Dropped;
                 report.OverBudget |= e.OverBudget;
             }
-            report.Step = FluidSolver.Step(c, colliders, dt, p, s, ref status);
             return report;
         }
 
