@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>Stages of the staged substep (<see cref="FluidThroughputRow.Staged"/>).</summary>
     public enum FluidStage
     {
-        /// <summary>The step's preamble: ages += dt and the fastest speed for the CFL limit.</summary>
+        /// <summary>The step's begin and finish: ages += dt, the fastest speed for the CFL limit, the status and report.</summary>
         Preamble,
         /// <summary>Keys, counting sort and the permutation of the six particle arrays.</summary>
         Sort,
@@ -32,15 +32,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         Viscosity,
         /// <summary>Speed bound, x += h·v, domain box.</summary>
         Advect,
+        /// <summary>Any other pass of the substep (none for this fluid: no cohesion, alignment or colliders).</summary>
+        Other,
     }
 
     /// <summary>
     /// Throughput of a weakly compressible water block: a cube of N particles at Δx = 2 cm resting on the floor of a box
     /// of its footprint, c₀ = 20 m/s, one viscosity iteration, h = 2Δx (a rest lattice has 26 neighbours within h; the
     /// settled block 27–29). An item is one particle-substep (pack/unpack: one particle gathered and scattered).
-    /// The staged row calls the <see cref="FluidPasses"/> of a substep one by one exactly as
-    /// <see cref="FluidSolver.Step"/> does (Setup checks that one staged substep gives the same bits as the solver's), with
-    /// <see cref="Stopwatch"/> timestamps between stages; each stage's cost is the median over the row's steps.
+    /// The staged row runs the step exactly as <see cref="FluidSolver.Step"/> does (begin, the substep's list of
+    /// <see cref="FluidPasses"/>, finish; Setup checks that it gives the same bits as the solver), with
+    /// <see cref="Stopwatch"/> timestamps between passes; each stage's cost is the median over the row's steps.
     /// </summary>
     public sealed class FluidThroughputScenario : IScenario, IScenarioRepeatCap
     {
@@ -60,6 +62,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         long[] m_StageTicks;
         int m_Recorded;
         int m_SameBits = -1;
+        FluidPass[] m_Passes;
 
         public FluidThroughputScenario(int side, FluidThroughputRow row)
         {
@@ -83,12 +86,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public static string StageName(FluidStage stage) => stage switch
         {
-            FluidStage.Preamble => "step preamble (ages, CFL speed)",
+            FluidStage.Preamble => "step begin and finish (ages, CFL speed)",
             FluidStage.Sort => "sort (keys, counting sort, permute)",
             FluidStage.Density => "density + neighbour lists",
             FluidStage.Forces => "forces",
             FluidStage.Viscosity => "viscosity (1 Jacobi it)",
-            _ => "advect",
+            FluidStage.Advect => "advect",
+            _ => "other passes",
         };
 
         /// <summary>Name of the metric holding a stage's ns per particle in the staged row.</summary>
@@ -121,6 +125,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, m_Substep, b.Particles, b.Scratch, ref b.Status);
             if (m_Row == FluidThroughputRow.Staged)
             {
+                Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
+                m_Passes = passes.Slice(0, FluidSubstepPasses.Write(m_Constants.Parameters, false, passes)).ToArray();
                 m_StageTicks = new long[k_MaxRecorded * s_StageCount];
                 m_SameBits = StagedMatchesSolver() ? 1 : 0;
                 m_Recorded = 0;
@@ -220,9 +226,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>
-        /// One weakly compressible substep of <see cref="m_Substep"/>, pass by pass as <see cref="FluidSolver.Step"/> runs
-        /// it without colliders or cohesion (preamble, then the substep of FluidSolver's WeaklyCompressibleSubstep),
-        /// recording the ticks of each stage.
+        /// One step of <see cref="m_Substep"/> (one substep) exactly as <see cref="FluidSolver.Step"/> runs it:
+        /// <see cref="FluidSolver.Begin"/>, the passes of <see cref="FluidSubstepPasses.Write"/> through
+        /// <see cref="FluidPasses.Run"/>, <see cref="FluidSolver.Finish"/>, with a timestamp after each pass; a pass's ticks
+        /// go to its stage (<see cref="StageOf"/>).
         /// </summary>
         void Staged()
         {
@@ -230,60 +237,43 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             FluidParticles p = b.Particles;
             FluidScratch s = b.Scratch;
             ref readonly FluidConstants c = ref m_Constants;
-            float dt = m_Substep;
-            int count = b.Status.Count;
-            var counters = new FluidPassCounters();
             int slot = m_Recorded < k_MaxRecorded ? m_Recorded++ : k_MaxRecorded - 1;
             Span<long> ticks = m_StageTicks.AsSpan(slot * s_StageCount, s_StageCount);
+            ticks.Clear();
 
             long t0 = Stopwatch.GetTimestamp();
-            for (int i = 0; i < count; i++)
-                p.Ages[i] += dt;
-            float maxSpeed = 0f;
-            for (int i = 0; i < count; i++)
-                maxSpeed = math.max(maxSpeed, math.lengthsq(p.Velocities[i]));
-            // The solver picks the substep count from this speed; at rest it is one substep of dt.
-            _ = FluidSolver.Substeps(c, math.sqrt(maxSpeed), dt);
-            long t1 = Stopwatch.GetTimestamp();
-
-            FluidPasses.Keys(c, p, s, 0, count, ref counters);
-            int live = FluidPasses.Sort(c.Grid, s, count);
-            FluidPasses.Permute(p.Positions, s.VectorsA, s.Order, live);
-            FluidPasses.Permute(p.Velocities, s.VectorsA, s.Order, live);
-            FluidPasses.Permute(p.Ages, s.Floats, s.Order, live);
-            FluidPasses.Permute(p.Lifetimes, s.Floats, s.Order, live);
-            FluidPasses.Permute(p.Attributes, s.Floats, s.Order, live);
-            FluidPasses.Permute(p.Ids, s.Ints, s.Order, live);
-            count = live;
-            long t2 = Stopwatch.GetTimestamp();
-
-            FluidPasses.Density(c, ReadOnlySpan<ColliderShape>.Empty, p, s, 0, count, ref counters);
-            long t3 = Stopwatch.GetTimestamp();
-
-            FluidPasses.Forces(c, ReadOnlySpan<ColliderShape>.Empty, p, s, s.VectorsA, 0, count, dt, true);
-            s.VectorsA.Slice(0, count).CopyTo(p.Velocities);
-            long t4 = Stopwatch.GetTimestamp();
-
-            p.Velocities.Slice(0, count).CopyTo(s.VectorsA);
-            FluidPasses.ViscosityIteration(c, p, s, s.VectorsA, s.VectorsB, 0, count, dt);
-            s.VectorsB.Slice(0, count).CopyTo(p.Velocities);
-            long t5 = Stopwatch.GetTimestamp();
-
-            FluidPasses.Advect(c, p, s, 0, count, dt, ref counters);
-            long t6 = Stopwatch.GetTimestamp();
-
-            b.Status.Count = count;
-            b.Status.Time += dt;
-            b.Status.Killed += counters.Killed;
-            b.Status.Expired += counters.Expired;
-            b.Status.Invalid += counters.Invalid;
-            ticks[(int)FluidStage.Preamble] = t1 - t0;
-            ticks[(int)FluidStage.Sort] = t2 - t1;
-            ticks[(int)FluidStage.Density] = t3 - t2;
-            ticks[(int)FluidStage.Forces] = t4 - t3;
-            ticks[(int)FluidStage.Viscosity] = t5 - t4;
-            ticks[(int)FluidStage.Advect] = t6 - t5;
+            FluidSolver.Plan plan = FluidSolver.Begin(c, m_Substep, p, ref b.Status);
+            int count = b.Status.Count;
+            var counters = new FluidPassCounters();
+            long t = Stopwatch.GetTimestamp();
+            ticks[(int)FluidStage.Preamble] += t - t0;
+            FluidStage stage = FluidStage.Other;
+            for (int k = 0; k < plan.Substeps; k++)
+            {
+                for (int q = 0; q < m_Passes.Length; q++)
+                {
+                    stage = StageOf(m_Passes[q], stage);
+                    FluidPasses.Run(m_Passes[q], c, ReadOnlySpan<ColliderShape>.Empty, p, s, 0, 1, ref count, plan.H, ref counters);
+                    long t1 = Stopwatch.GetTimestamp();
+                    ticks[(int)stage] += t1 - t;
+                    t = t1;
+                }
+            }
+            FluidSolver.Finish(plan, counters, m_Substep, count, ref b.Status);
+            ticks[(int)FluidStage.Preamble] += Stopwatch.GetTimestamp() - t;
         }
+
+        /// <summary>The stage a pass counts in; a copy of velocities back counts in the stage of the pass before it (<paramref name="current"/>).</summary>
+        public static FluidStage StageOf(FluidPass pass, FluidStage current) => pass switch
+        {
+            FluidPass.Sort or FluidPass.SortWithPrevious => FluidStage.Sort,
+            FluidPass.Density or FluidPass.DensityFromNeighbours => FluidStage.Density,
+            FluidPass.SurfaceNormals or FluidPass.Forces or FluidPass.CohesionForces => FluidStage.Forces,
+            FluidPass.CopyVelocitiesToA or FluidPass.ViscosityAToB or FluidPass.ViscosityBToA or FluidPass.CopyBToVelocities => FluidStage.Viscosity,
+            FluidPass.Advect or FluidPass.Predict => FluidStage.Advect,
+            FluidPass.CopyAToVelocities => current,
+            _ => FluidStage.Other,
+        };
 
         public IReadOnlyList<Metric> Evaluate()
         {

@@ -53,7 +53,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             string pack = FluidThroughputScenario.RowName(FluidThroughputRow.PackUnpack);
             AppendLine(md, "whole substep (FluidSolver.Step)", sizes, n => Find(rows, substep, n).NsPerItem);
             foreach (FluidStage stage in (FluidStage[])Enum.GetValues(typeof(FluidStage)))
-                AppendLine(md, "– " + FluidThroughputScenario.StageName(stage), sizes, n => Find(rows, staged, n).Value(FluidThroughputScenario.StageMetric(stage)));
+                if (AnyPositive(sizes, n => Find(rows, staged, n).Value(FluidThroughputScenario.StageMetric(stage))))
+                    AppendLine(md, "– " + FluidThroughputScenario.StageName(stage), sizes, n => Find(rows, staged, n).Value(FluidThroughputScenario.StageMetric(stage)));
             AppendLine(md, "staged substep (sum, with stopwatches)", sizes, n => Find(rows, staged, n).NsPerItem);
             AppendLine(md, "pack/unpack (entity gather + scatter)", sizes, n => Find(rows, pack, n).NsPerItem);
             md.AppendLine();
@@ -69,6 +70,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     stagedRow.Value("same bits as FluidSolver.Step") == 1 ? "matches" : "does NOT match"));
             }
             return md.ToString();
+        }
+
+        static bool AnyPositive(List<int> sizes, Func<int, double> value)
+        {
+            foreach (int n in sizes)
+                if (value(n) > 0)
+                    return true;
+            return false;
         }
 
         static void AppendLine(StringBuilder md, string label, List<int> sizes, Func<int, double> nsPerParticle)
