@@ -230,14 +230,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     continue;
                 if (!header)
                 {
-                    md.AppendLine("| Hydrostatic column | pressure gradient error | pressure L2 error | depth of p = 0 below the surface (mm) | density error | kinetic energy (J/kg) | surface drift (mm) | lost |");
-                    md.AppendLine("|---|---|---|---|---|---|---|---|");
+                    md.AppendLine("| Hydrostatic column | pressure gradient error | pressure L2 error | scatter about the fitted line | depth of p = 0 below the surface (mm) | density error | kinetic energy (J/kg) | surface drift (mm) | lost |");
+                    md.AppendLine("|---|---|---|---|---|---|---|---|---|");
                     header = true;
                 }
                 double depth = r.Value("zero-pressure depth");
-                md.AppendLine(F("| {0} | {1} | {2} | {3} | {4:0.00} % | {5:0.0e+0} | {6:0.0} | {7:0} |", r.Method, Percent(r.Value("pressure gradient error")),
-                    Percent(r.Value("pressure L2 error")), double.IsNaN(depth) ? "–" : F("{0:0}", depth), r.Value("density error"), r.Value("kinetic energy"),
-                    r.Value("surface drift"), r.Value("particles lost")));
+                md.AppendLine(F("| {0} | {1} | {2} | {3} | {4} | {5:0.00} % | {6:0.0e+0} | {7:0.0} | {8:0} |", r.Method, Percent(r.Value("pressure gradient error")),
+                    Percent(r.Value("pressure L2 error")), Percent(r.Value("pressure scatter")), double.IsNaN(depth) ? "–" : F("{0:0}", depth),
+                    r.Value("density error"), r.Value("kinetic energy"), r.Value("surface drift"), r.Value("particles lost")));
             }
             if (header)
                 md.AppendLine();
@@ -268,7 +268,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 foreach (double t in DropletScenario.ReportTimes)
                     md.Append(F(" {0:0.000} |", r.Value(F("sphericity at {0:0.##} s", t))));
                 double round = r.Value("time to round");
-                md.AppendLine(F(" {0:0.000} | {1} | {2:+0.0;−0.0} % | {3:0.0} % | {4:0.0e+0} | {5:0} |", r.Value("sphericity"),
+                md.AppendLine(F(" {0:0.000} | {1} | {2:+0.0;−0.0} % | {3:0.00} % | {4:0.0e+0} | {5:0} |", r.Value("sphericity"),
                     double.IsNaN(round) ? "not reached" : F("{0:0.00} s", round), r.Value("radius error"), r.Value("density error"), r.Value("RMS speed"), RunMs(r)));
             }
             if (header)
