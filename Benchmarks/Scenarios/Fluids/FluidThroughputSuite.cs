@@ -5,28 +5,32 @@ using System.Text;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
-    /// <summary>Fluid throughput per stage at 10k, 100k and 1M particles, with the log-log slope of time against N.</summary>
+    /// <summary>Fluid throughput at 10k, 100k and 1M particles with the log-log slope, split by stage, with the pack/unpack share and the bytes per particle.</summary>
     public sealed class FluidThroughputSuite : IScenarioSuite, IScenarioSuiteSummary
     {
         /// <summary>Cube edges: 22³ = 10 648, 46³ = 97 336, 100³ = 1 000 000 particles.</summary>
         public static readonly int[] Sides = { 22, 46, 100 };
 
+        /// <summary>The issue's target for the weakly compressible substep on one core in .NET (particle-substeps per second).</summary>
+        public const double TargetPerSecond = 1e6;
+
         public string Name => "FluidThroughput";
 
         public string Description =>
-            "A cube of water at Δx = 2 cm resting in a box (weakly compressible, c₀ = 20 m/s, α = 0.05, one viscosity iteration, h = 2Δx, " +
-            "about 30 neighbours), single-threaded .NET on this machine. Each row times one stage over all particles (an item is one " +
-            "particle through that stage); 'WCSPH substep' is the whole substep (FluidSolver.Step of one CFL substep), so its items/s are " +
-            "particle-substeps per second. 'pack/unpack' gathers the particle arrays into entity order through a fixed random permutation " +
-            "and scatters them back: the extra cost of one entity per particle. Bytes per particle = all solver arrays + the cell table.";
+            "A cube of water at Δx = 2 cm resting in a box (weakly compressible, c₀ = 20 m/s, α = 0.05, one viscosity iteration, h = 2Δx: " +
+            "26 neighbours on the rest lattice, 27–29 in the settled block), single-threaded .NET on this machine. 'WCSPH substep (FluidSolver.Step)' " +
+            "is one CFL substep through the solver, so its items/s are particle-substeps per second. 'WCSPH substep, staged' runs the same substep " +
+            "pass by pass in the solver's order (checked bit for bit against FluidSolver.Step at setup) with a stopwatch between stages; each stage's " +
+            "ns per particle is the median over the row's steps. 'pack/unpack' gathers the particle arrays into entity order through a fixed random " +
+            "permutation and scatters them back: the extra cost of one entity per particle. Bytes per particle = all solver arrays + the cell table.";
 
         public string ErrorMetricForPlot => null;
 
         public IEnumerable<IScenario> Scenarios(bool quick)
         {
             foreach (int side in quick ? new[] { 22 } : Sides)
-            foreach (FluidStage stage in (FluidStage[])Enum.GetValues(typeof(FluidStage)))
-                yield return new FluidThroughputScenario(side, stage);
+            foreach (FluidThroughputRow row in (FluidThroughputRow[])Enum.GetValues(typeof(FluidThroughputRow)))
+                yield return new FluidThroughputScenario(side, row);
         }
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
@@ -36,7 +40,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (!sizes.Contains(r.Size))
                     sizes.Add(r.Size);
             var md = new StringBuilder();
-            md.Append("| Stage (ns per particle) |");
+            md.Append("| ns per particle |");
             foreach (int n in sizes)
                 md.Append(' ').Append(n.ToString("N0", CultureInfo.InvariantCulture)).Append(" |");
             md.AppendLine(" slope of time vs N (log-log) |");
@@ -44,47 +48,65 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             foreach (int _ in sizes)
                 md.Append("---|");
             md.AppendLine("---|");
+            string substep = FluidThroughputScenario.RowName(FluidThroughputRow.Substep);
+            string staged = FluidThroughputScenario.RowName(FluidThroughputRow.Staged);
+            string pack = FluidThroughputScenario.RowName(FluidThroughputRow.PackUnpack);
+            AppendLine(md, "whole substep (FluidSolver.Step)", sizes, n => Find(rows, substep, n).NsPerItem);
             foreach (FluidStage stage in (FluidStage[])Enum.GetValues(typeof(FluidStage)))
-            {
-                string name = FluidThroughputScenario.StageName(stage);
-                md.Append("| ").Append(name).Append(" |");
-                var xs = new List<double>();
-                var ys = new List<double>();
-                foreach (int n in sizes)
-                {
-                    double ns = double.NaN;
-                    foreach (ScenarioOutcome r in rows)
-                        if (r.Method == name && r.Size == n)
-                            ns = r.NsPerItem;
-                    md.Append(string.Format(CultureInfo.InvariantCulture, " {0:0} |", ns));
-                    if (!double.IsNaN(ns))
-                    {
-                        xs.Add(Math.Log(n));
-                        ys.Add(Math.Log(ns * n));
-                    }
-                }
-                md.AppendLine(xs.Count >= 2 ? string.Format(CultureInfo.InvariantCulture, " {0:0.00} |", Slope(xs, ys)) : " – |");
-            }
+                if (AnyPositive(sizes, n => Find(rows, staged, n).Value(FluidThroughputScenario.StageMetric(stage))))
+                    AppendLine(md, "– " + FluidThroughputScenario.StageName(stage), sizes, n => Find(rows, staged, n).Value(FluidThroughputScenario.StageMetric(stage)));
+            AppendLine(md, "staged substep (sum, with stopwatches)", sizes, n => Find(rows, staged, n).NsPerItem);
+            AppendLine(md, "pack/unpack (entity gather + scatter)", sizes, n => Find(rows, pack, n).NsPerItem);
             md.AppendLine();
             foreach (int n in sizes)
             {
-                double step = Find(rows, FluidStage.Substep, n), pack = Find(rows, FluidStage.PackUnpack, n);
+                ScenarioOutcome step = Find(rows, substep, n), stagedRow = Find(rows, staged, n);
+                double perSecond = 1e9 / step.NsPerItem;
                 md.AppendLine(string.Format(CultureInfo.InvariantCulture,
-                    "- {0:N0} particles: {1:0.00} M particle-substeps/s; pack/unpack = {2:0.0} % of a substep{3}.",
-                    n, 1e3 / step, 100 * pack / step, n >= 50000 ? " (issue target: under 15 % of a step at 100k)" : ""));
+                    "- {0:N0} particles ({1:0.0} neighbours): {2:0.00} M particle-substeps/s ({3} the {4:0.#} M/s target); pack/unpack = {5:0.0} % of a substep; " +
+                    "{6:0} bytes per particle; staged substep {7} FluidSolver.Step's bits.",
+                    n, step.Value("neighbours"), perSecond * 1e-6, perSecond >= TargetPerSecond ? "meets" : "below", TargetPerSecond * 1e-6,
+                    100 * Find(rows, pack, n).NsPerItem / step.NsPerItem, step.Value("bytes per particle"),
+                    stagedRow.Value("same bits as FluidSolver.Step") == 1 ? "matches" : "does NOT match"));
             }
             return md.ToString();
         }
 
-        static double Find(IReadOnlyList<ScenarioOutcome> rows, FluidStage stage, int n)
+        static bool AnyPositive(List<int> sizes, Func<int, double> value)
         {
-            string name = FluidThroughputScenario.StageName(stage);
-            foreach (ScenarioOutcome r in rows)
-                if (r.Method == name && r.Size == n)
-                    return r.NsPerItem;
-            return double.NaN;
+            foreach (int n in sizes)
+                if (value(n) > 0)
+                    return true;
+            return false;
         }
 
+        static void AppendLine(StringBuilder md, string label, List<int> sizes, Func<int, double> nsPerParticle)
+        {
+            md.Append("| ").Append(label).Append(" |");
+            var xs = new List<double>();
+            var ys = new List<double>();
+            foreach (int n in sizes)
+            {
+                double ns = nsPerParticle(n);
+                md.Append(string.Format(CultureInfo.InvariantCulture, " {0:0} |", ns));
+                if (ns > 0)
+                {
+                    xs.Add(Math.Log(n));
+                    ys.Add(Math.Log(ns * n));
+                }
+            }
+            md.AppendLine(xs.Count >= 2 ? string.Format(CultureInfo.InvariantCulture, " {0:0.00} |", Slope(xs, ys)) : " – |");
+        }
+
+        static ScenarioOutcome Find(IReadOnlyList<ScenarioOutcome> rows, string method, int n)
+        {
+            foreach (ScenarioOutcome r in rows)
+                if (r.Method == method && r.Size == n)
+                    return r;
+            return new ScenarioOutcome(method, double.NaN, Array.Empty<Metric>(), n);
+        }
+
+        /// <summary>Least-squares slope of <paramref name="ys"/> against <paramref name="xs"/>.</summary>
         static double Slope(List<double> xs, List<double> ys)
         {
             double mx = 0, my = 0;

@@ -1,0 +1,108 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>The measures of the fluid study (FluidAccuracy, FluidThroughput): what they report on inputs with a known answer.</summary>
+    public class FluidStudyMeasureTests
+    {
+        static FluidBuffers Points(IReadOnlyList<float3> points)
+        {
+            var b = new FluidBuffers(points.Count, new FluidGrid(new float3(-1f), new float3(1f), 0.1f));
+            for (int i = 0; i < points.Count; i++)
+                b.Positions[i] = points[i];
+            b.Status.Count = points.Count;
+            return b;
+        }
+
+        [Test]
+        public void Sphericity_IsOneForASphereAndOneOverRootThreeForACube()
+        {
+            // 4000 points of a Fibonacci sphere of radius 0.1: neighbouring points are ≈ √(4π/4000) = 0.056 rad apart, so
+            // the extreme point along any direction lies within that angle of it and every width is at least
+            // 2R·cos(0.056) = 0.9984·2R: sphericity ≥ 0.998.
+            var sphere = new List<float3>();
+            double golden = Math.PI * (3 - Math.Sqrt(5));
+            for (int k = 0; k < 4000; k++)
+            {
+                double z = 1 - (k + 0.5) * 2 / 4000, r = Math.Sqrt(1 - z * z);
+                sphere.Add(0.1f * new float3((float)(r * Math.Cos(k * golden)), (float)(r * Math.Sin(k * golden)), (float)z));
+            }
+            Assert.That(DropletScenario.Sphericity(Points(sphere), 0f), Is.GreaterThan(0.998));
+
+            // The corners of a cube: width along a face normal = edge, largest along a body diagonal = √3·edge, so 1/√3 = 0.577
+            // for exact directions. The 100-direction set has one 0.3° off a face normal (width ≤ 1.005·edge) and one within 3°
+            // of a body diagonal (width ≥ √3·cos 3°·edge): the ratio lies in [1/√3, 1.005/(√3·cos 3°)] = [0.5774, 0.5810].
+            var cube = new List<float3>();
+            for (int i = 0; i < 8; i++)
+                cube.Add(new float3(i & 1, (i >> 1) & 1, (i >> 2) & 1) * 0.1f);
+            Assert.That(DropletScenario.Sphericity(Points(cube), 0f), Is.InRange(1 / Math.Sqrt(3), 1.005 / (Math.Sqrt(3) * Math.Cos(3 * Math.PI / 180))));
+        }
+
+        [Test]
+        public void FrontSpeed_OfTheTableIsItsLateSlope()
+        {
+            // The stability plan quotes a late slope of 1.38 for Table 2; the least-squares fit over 2 ≤ T ≤ 3.33
+            // (8 points) must give it to the table's two decimals.
+            double slope = DamBreakScenario.FrontSpeed(MartinMoyce1952.T, MartinMoyce1952.Z, MartinMoyce1952.T.Length, DamBreakScenario.LateT, DamBreakScenario.LastTableT);
+            Assert.That(slope, Is.EqualTo(1.38).Within(0.005));
+            // A line Z = 1 + 2T sampled anywhere has slope 2 exactly (up to double round-off).
+            double[] t = { 0.5, 1.9, 2.0, 2.5, 3.0, 3.33, 3.4 };
+            var z = new double[t.Length];
+            for (int k = 0; k < t.Length; k++)
+                z[k] = 1 + 2 * t[k];
+            Assert.That(DamBreakScenario.FrontSpeed(t, z, t.Length, 2.0, 3.33), Is.EqualTo(2.0).Within(1e-12));
+        }
+
+        [Test]
+        public void StagedSubstep_HasTheBitsOfFluidSolverStep()
+        {
+            // The throughput suite's per-stage split is only meaningful if the staged step is the solver's step: its setup
+            // runs one of each from the same state and compares positions, velocities and ids bit for bit.
+            var scenario = new FluidThroughputScenario(8, FluidThroughputRow.Staged);
+            scenario.Setup();
+            scenario.Step();
+            double same = double.NaN;
+            foreach (Metric m in scenario.Evaluate())
+                if (m.Name == "same bits as FluidSolver.Step")
+                    same = m.Value;
+            Assert.AreEqual(1.0, same);
+        }
+
+        [Test]
+        public void StageOf_CountsEveryPassOfAWeaklyCompressibleSubstepInANamedStage()
+        {
+            // The throughput fluid (no cohesion, no colliders) must leave nothing in "other passes".
+            FluidParameters p = FluidThroughputScenario.CubeParameters(8).Sanitized();
+            Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
+            int n = FluidSubstepPasses.Write(p, false, passes);
+            FluidStage stage = FluidStage.Other;
+            for (int q = 0; q < n; q++)
+            {
+                stage = FluidThroughputScenario.StageOf(passes[q], stage);
+                Assert.AreNotEqual(FluidStage.Other, stage, passes[q].ToString());
+            }
+        }
+
+        [Test]
+        public void HardCase_NaNInjected_RemovesExactlyTheTwoNonFiniteParticles()
+        {
+            // NaN in one position and +∞ in one velocity are removed by the next sort; 1e20 m is finite and is put back in
+            // the box. The 998 others stay finite and inside.
+            var scenario = new FluidHardCaseScenario(FluidHardCase.NaNInjected, FluidSolverKind.WeaklyCompressible);
+            scenario.Setup();
+            scenario.Step();
+            var values = new Dictionary<string, double>();
+            foreach (Metric m in scenario.Evaluate())
+                values[m.Name] = m.Value;
+            Assert.AreEqual(2.0, values["invalid removed"]);
+            Assert.AreEqual(998.0, values["alive"]);
+            Assert.AreEqual(1.0, values["finite"]);
+            Assert.AreEqual(1.0, values["in box"]);
+        }
+    }
+}
