@@ -67,14 +67,15 @@ namespace SoftBodyDynamics.Solvers
                 return new Plan();
             for (int i = 0; i < count; i++)
                 p.Ages[i] += dt;
+            // A non-finite speed belongs to a particle the first sort removes: it must not set the substeps.
             float maxSpeed = 0f;
             for (int i = 0; i < count; i++)
             {
                 float v2 = math.lengthsq(p.Velocities[i]);
-                if (v2 > maxSpeed)
+                if (v2 > maxSpeed && v2 < float.PositiveInfinity)
                     maxSpeed = v2;
             }
-            maxSpeed = math.isfinite(maxSpeed) ? math.min(math.sqrt(maxSpeed), c.Parameters.MaxSpeed) : c.Parameters.MaxSpeed;
+            maxSpeed = math.min(math.sqrt(maxSpeed), c.Parameters.MaxSpeed);
             int2 substeps = Substeps(c, maxSpeed, dt);
             return new Plan { Substeps = substeps.y, SubstepsWanted = substeps.x, H = dt / substeps.y };
         }

@@ -209,6 +209,21 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void InfiniteVelocity_DoesNotSetTheSubsteps()
+        {
+            // The particle with an infinite velocity is removed by the first sort; the substeps must come from the others
+            // (a resting block: as many as at rest, far below the cap).
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 500, float3.zero, new float3(0.2f, 0.1f, 0.2f));
+            int atRest = FluidSolver.Substeps(c, 0f, 1f / 60f).y;
+            b.Velocities[3] = new float3(float.PositiveInfinity, 0f, 0f);
+            FluidStepReport r = FluidTestScenes.Step(c, b, 1f / 60f);
+            Assert.AreEqual(1, r.Invalid);
+            Assert.AreEqual(atRest, r.Substeps);
+        }
+
+        [Test]
         public void HugeStep_IsCappedReportedAndFinite()
         {
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
