@@ -1,0 +1,85 @@
+// Density and neighbour lists (FluidPasses.Density, DensityFromNeighbours, StoreDensity) over the 25 rows of the
+// 5×5×5 cells around a particle (NeighbourRows), in the same order as the CPU so the sums round alike.
+#ifndef SBD_FLUID_DENSITY_INCLUDED
+#define SBD_FLUID_DENSITY_INCLUDED
+#include "FluidWalls.hlsl"
+
+// ρ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored and counted against the bound.
+float StoreDensity(uint i, float3 xi, float kernelSum)
+{
+    float wall; float3 push;
+    SampleWalls(xi, wall, push);
+    float rho = _Material.x * _Kernel.z * kernelSum + _Material.y * wall;
+    _Densities[i] = rho;
+    float ratio = rho / _Material.y;
+    InterlockedMax(_Stats[STAT_MAX_DENSITY_RATIO], asuint(max(ratio, 0.0)));
+    if (ratio > _Material.w) InterlockedAdd(_Stats[STAT_OVER_COMPRESSED], 1);
+    return rho;
+}
+
+// Müller 2003 eq. 3 with the neighbour list; weakly compressible adds the Tait pressure (Becker & Teschner 2007,
+// eq. 6) of the density clamped to at least ρ₀, stored as p/ρ².
+[numthreads(FLUID_GROUP, 1, 1)]
+void Density(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float3 xi = _Positions[i].xyz;
+    float h2 = _Kernel.y;
+    int3 c = CellOf(xi);
+    int3 d = int3(_GridDims.xyz);
+    int x0 = max(c.x - 2, 0), x1 = min(c.x + 2, d.x - 1);
+    int y0 = max(c.y - 2, 0), y1 = min(c.y + 2, d.y - 1);
+    int z0 = max(c.z - 2, 0), z1 = min(c.z + 2, d.z - 1);
+    uint listStart = i * MAX_NEIGHBOURS, found = 0, overflow = 0;
+    float sum = 0.0;
+    for (int z = z0; z <= z1; z++)
+    for (int y = y0; y <= y1; y++)
+    {
+        int row = d.x * (y + d.y * z);
+        uint begin = _CellStart[row + x0], end = _CellStart[row + x1 + 1];
+        for (uint j = begin; j < end; j++)
+        {
+            float3 r = xi - _Positions[j].xyz;
+            float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
+            if (!(q > 0.0)) continue;
+            sum += q * q * q;
+            if (j == i) continue;
+            if (found < MAX_NEIGHBOURS) _Neighbours[listStart + found++] = j;
+            else overflow++;
+        }
+    }
+    _NeighbourCounts[i] = found;
+    if (overflow > 0) InterlockedAdd(_Stats[STAT_NEIGHBOUR_OVERFLOW], overflow);
+    float rho = StoreDensity(i, xi, sum);
+    if (_Flags.x != 0)
+    {
+        float rho0 = _Material.y;
+        float rc = max(rho, rho0);
+        float qr = rc / rho0;
+        float q2 = qr * qr;
+        float pressure = _Material.z * (q2 * q2 * q2 * qr - 1.0);
+        _Pressures[i] = pressure / (rc * rc);
+    }
+}
+
+// The density again from the lists of the last Density pass (position-based iterations).
+[numthreads(FLUID_GROUP, 1, 1)]
+void DensityFromNeighbours(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float3 xi = _Positions[i].xyz;
+    float h2 = _Kernel.y;
+    float sum = h2 * h2 * h2;
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    for (uint n = 0; n < count; n++)
+    {
+        float3 r = xi - _Positions[_Neighbours[list + n]].xyz;
+        float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
+        if (q > 0.0) sum += q * q * q;
+    }
+    StoreDensity(i, xi, sum);
+}
+
+#endif

@@ -1,0 +1,128 @@
+// Accelerations and the velocity update (FluidPasses.SurfaceNormals, Forces), into _VectorsA.
+#ifndef SBD_FLUID_FORCES_INCLUDED
+#define SBD_FLUID_FORCES_INCLUDED
+#include "FluidWalls.hlsl"
+
+// Akinci et al. 2013 surface normals nᵢ = h·Σⱼ (m/ρⱼ)·∇W(xᵢ − xⱼ) (eq. 4) into _VectorsB.
+[numthreads(FLUID_GROUP, 1, 1)]
+void SurfaceNormals(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float3 xi = _Positions[i].xyz;
+    float m = _Material.x;
+    float3 n = float3(0.0, 0.0, 0.0);
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    for (uint a = 0; a < count; a++)
+    {
+        uint j = _Neighbours[list + a];
+        float3 rij = xi - _Positions[j].xyz;
+        n += (m / _Densities[j]) * SpikyGradientScale(length(rij)) * rij;
+    }
+    _VectorsB[i] = float4(_Kernel.x * n, 0.0);
+}
+
+// Weakly compressible: gravity, the symmetric pressure term with Monaghan's artificial viscosity (Müller 2003, eq. 10;
+// Becker & Teschner 2007, eq. 11) and the walls' push (Akinci 2012, eq. 9); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
+float4 Acceleration(uint i, bool pressureAndGravity)
+{
+    float h = _Motion.x, H = _Kernel.x, H2 = _Kernel.y;
+    float m = _Material.x, rho0 = _Material.y;
+    float3 xi = _Positions[i].xyz;
+    float3 vi = _Velocities[i].xyz;
+    float3 a = float3(0.0, 0.0, 0.0);
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    int idI = (int)_Extras[i].y;
+    if (pressureAndGravity)
+    {
+        float alphaCh = _Motion.z, eta2 = 0.01 * H2, minDistance = 1e-6 * H;
+        float pi = _Pressures[i], rhoi = _Densities[i];
+        float3 sum = float3(0.0, 0.0, 0.0);
+        for (uint n = 0; n < count; n++)
+        {
+            uint j = _Neighbours[list + n];
+            float3 rij = xi - _Positions[j].xyz;
+            float r2 = dot(rij, rij);
+            float r = sqrt(r2);
+            float scale = pi + _Pressures[j];
+            // Πᵢⱼ for approaching pairs only.
+            float approach = min(dot(vi - _Velocities[j].xyz, rij), 0.0);
+            scale -= alphaCh * approach / ((rhoi + _Densities[j]) * (r2 + eta2));
+            if (r > minDistance)
+            {
+                float hr = max(H - r, 0.0);
+                sum += (scale * hr * hr / r) * rij;
+            }
+            else
+                sum += scale * H2 * CoincidentDirection(idI, (int)_Extras[j].y);
+        }
+        sum *= -m * _Kernel.w * _Kernel2.w;
+        float wall; float3 push;
+        SampleWalls(xi, wall, push);
+        a += _Gravity.xyz + sum + rho0 * pi * push;
+    }
+    if (_Flags.y != 0)
+    {
+        // Flocking: toward the kernel-weighted neighbour centre, away from neighbours closer than the spacing.
+        float3 centre = float3(0.0, 0.0, 0.0), separation = float3(0.0, 0.0, 0.0);
+        float weight = 0.0, spacing = _Cohesion.z;
+        for (uint n = 0; n < count; n++)
+        {
+            float3 xj = _Positions[_Neighbours[list + n]].xyz;
+            float3 rij = xi - xj;
+            float r2 = dot(rij, rij);
+            float w = Poly6(r2);
+            centre += w * xj;
+            weight += w;
+            float r = sqrt(r2);
+            if (r < spacing && r > 0.0) separation += (spacing - r) / r * rij;
+        }
+        if (weight > 0.0) a += _Cohesion.x * (centre / weight - xi);
+        a += _Cohesion.y * separation;
+    }
+    if (_Flags.z != 0)
+    {
+        // Akinci et al. 2013, eqs. 1–5: aᵢ = −γ·Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ).
+        float3 ni = _VectorsB[i].xyz;
+        float rhoi = _Densities[i];
+        float3 sum = float3(0.0, 0.0, 0.0);
+        for (uint n = 0; n < count; n++)
+        {
+            uint j = _Neighbours[list + n];
+            float3 rij = xi - _Positions[j].xyz;
+            float r = length(rij);
+            if (!(r < H)) continue;
+            float kij = 2.0 * rho0 / (rhoi + _Densities[j]);
+            float3 cohesion = float3(0.0, 0.0, 0.0);
+            if (r > 0.0)
+            {
+                float t = (H - r) * r;
+                float c3 = t * t * t;
+                float spline = _Kernel2.x * (2.0 * r > H ? c3 : 2.0 * c3 - _Kernel2.y);
+                cohesion = m * spline / r * rij;
+            }
+            sum += kij * (cohesion + (ni - _VectorsB[j].xyz));
+        }
+        a -= _Cohesion.w * sum;
+    }
+    return float4(vi + h * a, 0.0);
+}
+
+[numthreads(FLUID_GROUP, 1, 1)]
+void Forces(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    _VectorsA[i] = Acceleration(i, true);
+}
+
+// Cohesion only (position-based).
+[numthreads(FLUID_GROUP, 1, 1)]
+void CohesionForces(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    _VectorsA[i] = Acceleration(i, false);
+}
+
+#endif

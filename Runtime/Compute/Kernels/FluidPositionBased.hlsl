@@ -1,0 +1,97 @@
+// Position-based fluids (Macklin & Müller 2013): FluidPasses.Predict, Lambda, Correction, ApplyCorrection and
+// VelocityFromPositions.
+#ifndef SBD_FLUID_POSITION_BASED_INCLUDED
+#define SBD_FLUID_POSITION_BASED_INCLUDED
+#include "FluidIntegrate.hlsl"
+
+// v += h·g, x⁰ = x, x += h·v, kept in the domain box.
+[numthreads(FLUID_GROUP, 1, 1)]
+void Predict(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    Move(i, _Velocities[i].xyz + _Motion.x * _Gravity.xyz);
+}
+
+// λᵢ = −Cᵢ / (Σₖ |∇ₖCᵢ|² + ε), Cᵢ = ρᵢ/ρ₀ − 1 clamped at 0 (eqs. 1–11), the wall term included.
+[numthreads(FLUID_GROUP, 1, 1)]
+void Lambda(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float invRho0 = 1.0 / _Material.y;
+    float mOverRho0 = _Material.x * invRho0;
+    float constraint = _Densities[i] * invRho0 - 1.0;
+    if (!(constraint > 0.0)) { _Pressures[i] = 0.0; return; }
+    float3 xi = _Positions[i].xyz;
+    float wall; float3 push;
+    SampleWalls(xi, wall, push);
+    float3 gradI = -push;
+    float sumSq = 0.0;
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    for (uint n = 0; n < count; n++)
+    {
+        float3 rij = xi - _Positions[_Neighbours[list + n]].xyz;
+        float3 g = mOverRho0 * SpikyGradientScale(length(rij)) * rij;
+        gradI += g;
+        sumSq += dot(g, g);
+    }
+    _Pressures[i] = -constraint / (sumSq + dot(gradI, gradI) + _Motion.w);
+}
+
+// Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eq. 12) into _VectorsA.
+[numthreads(FLUID_GROUP, 1, 1)]
+void Correction(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float mOverRho0 = _Material.x / _Material.y;
+    float3 xi = _Positions[i].xyz;
+    float li = _Pressures[i];
+    float3 dx = float3(0.0, 0.0, 0.0);
+    int idI = (int)_Extras[i].y;
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    for (uint n = 0; n < count; n++)
+    {
+        uint j = _Neighbours[list + n];
+        float lij = li + _Pressures[j];
+        if (lij == 0.0) continue;
+        float3 rij = xi - _Positions[j].xyz;
+        float r = length(rij);
+        if (r > 1e-6 * _Kernel.x) dx += lij * SpikyGradientScale(r) * rij;
+        else dx += lij * _Kernel.w * _Kernel.y * CoincidentDirection(idI, (int)_Extras[j].y);
+    }
+    dx *= mOverRho0;
+    if (li != 0.0)
+    {
+        float wall; float3 push;
+        SampleWalls(xi, wall, push);
+        dx -= li * push;
+    }
+    _VectorsA[i] = float4(dx, 0.0);
+}
+
+// xᵢ += Δxᵢ, kept in the domain box.
+[numthreads(FLUID_GROUP, 1, 1)]
+void ApplyCorrection(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float4 xa = _Positions[i];
+    float3 x = xa.xyz + _VectorsA[i].xyz;
+    float3 v = _Velocities[i].xyz;
+    ClampToDomain(x, v);
+    _Positions[i] = float4(x, xa.w);
+}
+
+// vᵢ = (xᵢ − x⁰ᵢ)/h.
+[numthreads(FLUID_GROUP, 1, 1)]
+void VelocityFromPositions(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float invH = 1.0 / _Motion.x;
+    _Velocities[i] = float4((_Positions[i].xyz - _Previous[i].xyz) * invH, _Velocities[i].w);
+}
+
+#endif

@@ -1,0 +1,164 @@
+// The counting sort of a substep (FluidPasses.Keys, Sort and FluidSolver.SortParticles): keys with removal, a
+// histogram whose atomic ranks are then made stable by sorting each cell's slots, the scan (FluidScan.hlsl), the
+// scatter and the permutation. Slots of dead particles get the key past every cell and so fall off the end: the
+// sort is also the stream compaction.
+#ifndef SBD_FLUID_SORT_INCLUDED
+#define SBD_FLUID_SORT_INCLUDED
+#include "FluidCommon.hlsl"
+
+// Zeroes the step's counters (the live count stays).
+[numthreads(16, 1, 1)]
+void ClearStats(uint3 id : SV_DispatchThreadID)
+{
+    if (id.x > STAT_LIVE && id.x < STAT_COUNT) _Stats[id.x] = 0;
+}
+
+// FluidSolver.Begin: ages += dt and the fastest finite speed (as the bits of v², which order like the floats).
+[numthreads(FLUID_GROUP, 1, 1)]
+void BeginStep(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    _Positions[i].w += _Smoothing.z;
+    float3 v = _Velocities[i].xyz;
+    float v2 = dot(v, v);
+    if (v2 > 0.0 && v2 <= FLOAT_MAX) InterlockedMax(_Stats[STAT_MAX_SPEED_SQUARED], asuint(v2));
+}
+
+// Zeroes the histogram: _Counts.z entries of _CellStart (cells + 2).
+[numthreads(FLUID_GROUP, 1, 1)]
+void ClearCells(uint3 id : SV_DispatchThreadID)
+{
+    if (id.x < _Counts.z) _CellStart[id.x] = 0;
+}
+
+// FluidPasses.Keys, and the slot's rank among those of its key (histogram in _CellStart[key + 1]).
+[numthreads(FLUID_GROUP, 1, 1)]
+void Keys(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    float4 xa = _Positions[i];
+    float4 vl = _Velocities[i];
+    float life = vl.w;
+    uint key;
+    if (life < 0.0 || isnan(life)) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_KILLED], 1); }
+    else if (life > 0.0 && xa.w >= life) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_EXPIRED], 1); }
+    else if (!IsFinite3(xa.xyz) || !IsFinite3(vl.xyz)) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_INVALID], 1); }
+    else key = KeyOf(CellOf(xa.xyz));
+    _Keys[i] = key;
+    uint rank;
+    InterlockedAdd(_CellStart[key + 1], 1, rank);
+    _Ranks[i] = rank;
+}
+
+// Order[CellStart[key] + rank] = slot.
+[numthreads(FLUID_GROUP, 1, 1)]
+void Scatter(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    _Order[_CellStart[_Keys[i]] + _Ranks[i]] = i;
+}
+
+// The atomic ranks follow no order: sorting each cell's slots ascending gives the stable counting sort's order,
+// the same bits as the CPU's (one thread per cell, insertion sort: a cell of k particles costs k² on one thread).
+[numthreads(FLUID_GROUP, 1, 1)]
+void SortCells(uint3 id : SV_DispatchThreadID)
+{
+    uint cell = id.x;
+    if (cell > _GridDims.w) return;
+    uint begin = _CellStart[cell], end = _CellStart[cell + 1];
+    for (uint a = begin + 1; a < end; a++)
+    {
+        uint value = _Order[a];
+        uint b = a;
+        while (b > begin && _Order[b - 1] > value)
+        {
+            _Order[b] = _Order[b - 1];
+            b--;
+        }
+        _Order[b] = value;
+    }
+}
+
+// The live count (slots with a cell key) and the indirect arguments of the particle kernels.
+[numthreads(1, 1, 1)]
+void CommitSort(uint3 id : SV_DispatchThreadID)
+{
+    uint live = _CellStart[_GridDims.w];
+    _Stats[STAT_LIVE] = live;
+    _Args[0] = (live + FLUID_GROUP - 1) / FLUID_GROUP;
+    _Args[1] = 1;
+    _Args[2] = 1;
+}
+
+// Out[k] = In[Order[k]] for the live slots: the gather half of FluidPasses.Permute (with _Previous when asked).
+void Gather(uint k, bool previous)
+{
+    uint j = _Order[k];
+    _PositionsOut[k] = _Positions[j];
+    _VelocitiesOut[k] = _Velocities[j];
+    _ExtrasOut[k] = _Extras[j];
+    if (previous) _PreviousOut[k] = _Previous[j];
+}
+
+[numthreads(FLUID_GROUP, 1, 1)]
+void Permute(uint3 id : SV_DispatchThreadID)
+{
+    if (id.x < LiveCount()) Gather(id.x, false);
+}
+
+[numthreads(FLUID_GROUP, 1, 1)]
+void PermuteWithPrevious(uint3 id : SV_DispatchThreadID)
+{
+    if (id.x < LiveCount()) Gather(id.x, true);
+}
+
+// In[k] = Out[k]: the copy half of the permutation (so every kernel keeps the same buffers bound).
+[numthreads(FLUID_GROUP, 1, 1)]
+void PermuteCopyBack(uint3 id : SV_DispatchThreadID)
+{
+    uint k = id.x;
+    if (k >= LiveCount()) return;
+    _Positions[k] = _PositionsOut[k];
+    _Velocities[k] = _VelocitiesOut[k];
+    _Extras[k] = _ExtrasOut[k];
+}
+
+[numthreads(FLUID_GROUP, 1, 1)]
+void PermuteCopyBackWithPrevious(uint3 id : SV_DispatchThreadID)
+{
+    uint k = id.x;
+    if (k >= LiveCount()) return;
+    _Positions[k] = _PositionsOut[k];
+    _Velocities[k] = _VelocitiesOut[k];
+    _Extras[k] = _ExtrasOut[k];
+    _Previous[k] = _PreviousOut[k];
+}
+
+// Appends _Counts.y particles from the spawn buffers (in _PositionsOut, _VelocitiesOut, _ExtrasOut) after the live
+// ones, as far as the capacity _Counts.x allows.
+[numthreads(FLUID_GROUP, 1, 1)]
+void Emit(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    uint slot = LiveCount() + i;
+    if (i >= _Counts.y || slot >= _Counts.x) return;
+    _Positions[slot] = _PositionsOut[i];
+    _Velocities[slot] = _VelocitiesOut[i];
+    _Extras[slot] = _ExtrasOut[i];
+}
+
+// The live count after Emit, and the indirect arguments.
+[numthreads(1, 1, 1)]
+void CommitEmit(uint3 id : SV_DispatchThreadID)
+{
+    uint live = min(LiveCount() + _Counts.y, _Counts.x);
+    _Stats[STAT_LIVE] = live;
+    _Args[0] = (live + FLUID_GROUP - 1) / FLUID_GROUP;
+    _Args[1] = 1;
+    _Args[2] = 1;
+}
+
+#endif

@@ -1,0 +1,70 @@
+// The walls of the domain box as the SPH sums see them: a port of FluidBoundary (Sample without colliders,
+// ClampToDomain) and of the half-space integrals of SphKernels.
+#ifndef SBD_FLUID_WALLS_INCLUDED
+#define SBD_FLUID_WALLS_INCLUDED
+#include "FluidCommon.hlsl"
+
+// SphKernels.WallDensityFraction: ∫W dV of poly6 beyond a plane at distance d, as a fraction of ρ₀.
+float WallDensityFraction(float d)
+{
+    if (d >= _Kernel.x) return 0.0;
+    float u = max(d, 0.0) / _Kernel.x;
+    float u2 = u * u;
+    float f = u * (1.0 + u2 * (-4.0 / 3.0 + u2 * (6.0 / 5.0 + u2 * (-4.0 / 7.0 + u2 * (1.0 / 9.0)))));
+    return 0.5 - 315.0 / 256.0 * f;
+}
+
+// SphKernels.WallGradientMagnitude: |∫∇W dV| of spiky beyond a plane at distance d (1/m).
+float WallGradientMagnitude(float d)
+{
+    if (d >= _Kernel.x) return 0.0;
+    float s = 1.0 - max(d, 0.0) / _Kernel.x;
+    float s4 = s * s * s * s;
+    return 30.0 / _Kernel.x * (s4 / 4.0 - s4 * s / 5.0);
+}
+
+// FluidBoundary.Sample for the six faces of the domain box: the kernel's share outside the fluid, and the push Σ κG(d)·n.
+void SampleWalls(float3 x, out float densityFraction, out float3 push)
+{
+    float h = _Kernel.x, kappa = _DomainMax.w;
+    float3 below = x - _DomainMin.xyz;
+    float3 above = _DomainMax.xyz - x;
+    float inside = 1.0;
+    push = float3(0.0, 0.0, 0.0);
+    densityFraction = 0.0;
+    float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
+    if (nearest >= h) return;
+    [unroll] for (int axis = 0; axis < 3; axis++)
+    {
+        float dBelow = below[axis], dAbove = above[axis];
+        float3 n = float3(axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0);
+        if (dBelow < h)
+        {
+            inside *= 1.0 - kappa * WallDensityFraction(dBelow);
+            push += kappa * WallGradientMagnitude(dBelow) * n;
+        }
+        if (dAbove < h)
+        {
+            inside *= 1.0 - kappa * WallDensityFraction(dAbove);
+            push -= kappa * WallGradientMagnitude(dAbove) * n;
+        }
+    }
+    densityFraction = 1.0 - inside;
+}
+
+// FluidBoundary.ClampToDomain: keeps x a wall distance inside the box and removes the velocity into a face it touches.
+void ClampToDomain(inout float3 x, inout float3 v)
+{
+    float3 lo = _DomainMin.xyz + _DomainMin.w;
+    float3 hi = _DomainMax.xyz - _DomainMin.w;
+    float3 clamped = clamp(x, lo, hi);
+    if (all(clamped == x)) return;
+    [unroll] for (int a = 0; a < 3; a++)
+    {
+        if (x[a] < lo[a]) v[a] = max(v[a], 0.0);
+        else if (x[a] > hi[a]) v[a] = min(v[a], 0.0);
+    }
+    x = clamped;
+}
+
+#endif

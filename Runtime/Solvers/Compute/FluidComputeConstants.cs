@@ -1,0 +1,58 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The constants of the fluid kernels (the float4 / uint4 globals of FluidCommon.hlsl), computed on the CPU from a
+    /// fluid's <see cref="FluidConstants"/>, the substep h and the step dt.
+    /// </summary>
+    public struct FluidComputeConstants
+    {
+        public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing;
+        public int4 GridDims, Flags;
+
+        /// <summary>The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds.</summary>
+        public static FluidComputeConstants Of(in FluidConstants c, float h, float dt)
+        {
+            FluidParameters p = c.Parameters;
+            SphKernels k = c.Kernels;
+            FluidGrid g = c.Grid;
+            bool flocking = p.Cohesion == FluidCohesionModel.Flocking && (p.CohesionWeight > 0f || p.SeparationWeight > 0f);
+            bool akinci = p.Cohesion == FluidCohesionModel.Akinci && p.SurfaceTension > 0f;
+            return new FluidComputeConstants
+            {
+                GridOrigin = new float4(g.Origin, g.InverseCellSize),
+                GridDims = new int4(g.Dimensions.x, g.Dimensions.y, g.Dimensions.z, g.CellCount),
+                DomainMin = new float4(p.DomainMin, c.WallDistance),
+                DomainMax = new float4(p.DomainMax, c.WallScale),
+                Gravity = new float4(p.Gravity, 0f),
+                Kernel = new float4(k.H, k.H2, k.Poly6Coefficient, k.SpikyGradientCoefficient),
+                Kernel2 = new float4(k.CohesionCoefficient, k.CohesionOffset, k.ViscosityLaplacianCoefficient, c.GradientCorrection),
+                Material = new float4(c.Mass, p.RestDensity, c.TaitStiffness, p.MaxDensityRatio),
+                Motion = new float4(h, p.MaxSpeed, 2f * p.ArtificialViscosity * p.SpeedOfSound * k.H, c.Relaxation),
+                Cohesion = new float4(p.CohesionWeight, p.SeparationWeight, p.ParticleSpacing, p.SurfaceTension),
+                // The same expressions as FluidPasses.ViscosityIteration and Alignment, so the GPU gets the CPU's bits.
+                Smoothing = new float4(h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient,
+                    1f - math.exp(-p.AlignmentRate * h), dt, 0f),
+                Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
+            };
+        }
+
+        /// <summary>Sets every constant on <paramref name="commands"/>.</summary>
+        public void Set<T>(ref T commands) where T : IFluidComputeCommands
+        {
+            commands.SetVector(FluidComputeGlobal.GridOrigin, GridOrigin);
+            commands.SetInts(FluidComputeGlobal.GridDims, GridDims);
+            commands.SetVector(FluidComputeGlobal.DomainMin, DomainMin);
+            commands.SetVector(FluidComputeGlobal.DomainMax, DomainMax);
+            commands.SetVector(FluidComputeGlobal.Gravity, Gravity);
+            commands.SetVector(FluidComputeGlobal.Kernel, Kernel);
+            commands.SetVector(FluidComputeGlobal.Kernel2, Kernel2);
+            commands.SetVector(FluidComputeGlobal.Material, Material);
+            commands.SetVector(FluidComputeGlobal.Motion, Motion);
+            commands.SetVector(FluidComputeGlobal.Cohesion, Cohesion);
+            commands.SetVector(FluidComputeGlobal.Smoothing, Smoothing);
+            commands.SetInts(FluidComputeGlobal.Flags, Flags);
+        }
+    }
+}

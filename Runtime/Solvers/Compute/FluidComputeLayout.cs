@@ -1,0 +1,92 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Per-particle extras on the GPU (8 bytes): the attribute and the id of <see cref="FluidParticles"/>.</summary>
+    public struct FluidComputeExtras
+    {
+        public float Attribute;
+        public int Id;
+    }
+
+    /// <summary>
+    /// The sizes the fluid kernels share with the C# side: thread-group size, stat slots, element strides and lengths of
+    /// every <see cref="FluidComputeBuffer"/>, and the levels of the scan.
+    /// </summary>
+    public static class FluidComputeLayout
+    {
+        /// <summary>Threads per group of the particle kernels (FLUID_GROUP in FluidCommon.hlsl); the indirect arguments use it.</summary>
+        public const int ThreadGroupSize = 256;
+        /// <summary>Elements one group of the scan handles (SCAN_BLOCK in FluidScan.hlsl).</summary>
+        public const int ScanBlock = 512;
+
+        // _Stats slots (STAT_* in FluidCommon.hlsl).
+        public const int StatLive = 0, StatKilled = 1, StatExpired = 2, StatInvalid = 3, StatSpeedClamped = 4, StatOverCompressed = 5,
+            StatNeighbourOverflow = 6, StatMaxDensityRatio = 7, StatMaxSpeedSquared = 8, StatCount = 9;
+
+        /// <summary>Bytes per element of a buffer.</summary>
+        public static int Stride(FluidComputeBuffer buffer)
+        {
+            switch (buffer)
+            {
+                case FluidComputeBuffer.Positions: case FluidComputeBuffer.Velocities: case FluidComputeBuffer.Previous:
+                case FluidComputeBuffer.PositionsOut: case FluidComputeBuffer.VelocitiesOut: case FluidComputeBuffer.PreviousOut:
+                case FluidComputeBuffer.VectorsA: case FluidComputeBuffer.VectorsB:
+                    return 16;
+                case FluidComputeBuffer.Extras: case FluidComputeBuffer.ExtrasOut:
+                    return 8;
+                default:
+                    return 4;
+            }
+        }
+
+        /// <summary>Elements of a buffer for <paramref name="capacity"/> particles on a grid of <paramref name="cells"/> cells.</summary>
+        public static int Length(FluidComputeBuffer buffer, int capacity, int cells)
+        {
+            capacity = math.max(capacity, 1);
+            switch (buffer)
+            {
+                case FluidComputeBuffer.CellStart: return cells + 2;
+                case FluidComputeBuffer.ScanSums: return ScanSumsLength(cells + 2);
+                case FluidComputeBuffer.Neighbours: return capacity * FluidScratch.MaxNeighbours;
+                case FluidComputeBuffer.Stats: return StatCount;
+                case FluidComputeBuffer.Args: return 3;
+                default: return capacity;
+            }
+        }
+
+        /// <summary>Most scan levels (512⁴ elements is more than <see cref="FluidGrid.MaxCells"/>).</summary>
+        public const int MaxScanLevels = 4;
+
+        /// <summary>
+        /// The levels of an inclusive scan of <paramref name="elements"/> values: level 0 is the data, each level above holds
+        /// the block totals of the one below, up to the first level of one block. Writes each level's element count and
+        /// the index of its block totals in <see cref="FluidComputeBuffer.ScanSums"/>; returns the level count.
+        /// </summary>
+        public static int ScanLevels(int elements, Span<int> counts, Span<int> sumOffsets)
+        {
+            int levels = 0, offset = 0, n = math.max(elements, 1);
+            while (true)
+            {
+                int blocks = (n + ScanBlock - 1) / ScanBlock;
+                counts[levels] = n;
+                sumOffsets[levels] = offset;
+                levels++;
+                if (blocks <= 1)
+                    return levels;
+                offset += blocks;
+                n = blocks;
+            }
+        }
+
+        /// <summary>Length of <see cref="FluidComputeBuffer.ScanSums"/> for a scan of <paramref name="elements"/> values.</summary>
+        public static int ScanSumsLength(int elements)
+        {
+            Span<int> counts = stackalloc int[MaxScanLevels];
+            Span<int> offsets = stackalloc int[MaxScanLevels];
+            int levels = ScanLevels(elements, counts, offsets);
+            return offsets[levels - 1] + 1;
+        }
+    }
+}
