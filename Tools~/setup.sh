@@ -8,6 +8,12 @@ need=()
 command -v glslangValidator >/dev/null 2>&1 || need+=(glslang-tools)
 command -v spirv-val        >/dev/null 2>&1 || need+=(spirv-tools)
 command -v gnuplot          >/dev/null 2>&1 || need+=(gnuplot-nox)
+command -v spirv-cross      >/dev/null 2>&1 || need+=(spirv-cross)
+command -v gcc              >/dev/null 2>&1 || need+=(gcc)
+# The GPU kernels run on lavapipe (Mesa's CPU Vulkan driver) through Tools~/VulkanHost, built against Debian's loader.
+[ -f /usr/share/vulkan/icd.d/lvp_icd.x86_64.json ] || need+=(mesa-vulkan-drivers)
+[ -f /usr/include/vulkan/vulkan.h ]               || need+=(libvulkan-dev)
+[ -f /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json ] || need+=(vulkan-validationlayers)
 if [ ${#need[@]} -gt 0 ]; then
   echo "setup: installing Debian packages: ${need[*]}"
   SUDO=""
@@ -22,6 +28,6 @@ if ! command -v dotnet >/dev/null 2>&1; then
   exit 1
 fi
 export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
-for p in SoftBodyDynamics.Tests.Solvers SoftBodyDynamics.Tests.MathematicsStandIn SoftBodyDynamics.Runner SoftBodyDynamics.MeshWriteBackTiming; do
+for p in SoftBodyDynamics.Tests.Solvers SoftBodyDynamics.Tests.MathematicsStandIn SoftBodyDynamics.Tests.Compute SoftBodyDynamics.Runner SoftBodyDynamics.MeshWriteBackTiming; do
   dotnet restore "$ROOT/Tools~/DotNet/$p/$p.csproj" --verbosity quiet >/dev/null
 done

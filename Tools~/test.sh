@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # All the tests: NUnit solver tests (the same files Unity runs), conformance tests of the Unity.Mathematics
-# stand-in, package lint, type-check of the Unity side, shader check (+ its self-test), a quick run of the
+# stand-in, the GPU kernels on lavapipe against the CPU solver, package lint, type-check of the Unity side, shader check (+ its self-test), a quick run of the
 # mesh write-back timing and a quick smoke run of the main job.
 # Ends with one line "N passed, N failed" and exits non-zero on any failure.
 set -uo pipefail
@@ -60,6 +60,9 @@ run_nunit nunit "Tools~/DotNet/SoftBodyDynamics.Tests.Solvers/SoftBodyDynamics.T
 
 section "NUnit: Unity.Mathematics stand-in conformance"
 run_nunit mathematics-stand-in "Tools~/DotNet/SoftBodyDynamics.Tests.MathematicsStandIn/SoftBodyDynamics.Tests.MathematicsStandIn.csproj"
+
+section "NUnit: GPU kernels on lavapipe against the CPU solver"
+run_nunit compute "Tools~/DotNet/SoftBodyDynamics.Tests.Compute/SoftBodyDynamics.Tests.Compute.csproj"
 
 section "package lint"
 run_check lint dotnet run --project "Tools~/PackageLint/PackageLint.csproj" -c Release -- "$ROOT"

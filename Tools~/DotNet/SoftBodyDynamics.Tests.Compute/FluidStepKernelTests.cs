@@ -1,0 +1,175 @@
+using System;
+using NUnit.Framework;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+using SoftBodyDynamics.Lavapipe;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Compute
+{
+    /// <summary>
+    /// Whole steps on the GPU against FluidSolver.Step. A fluid is chaotic: round-off differences grow, so after many
+    /// steps the two runs agree only statistically. The yardstick is the CPU's own sensitivity: the same CPU run from
+    /// positions moved by about one float32 ulp (1e-7 m). The GPU run must stay as close to the CPU run as that perturbed
+    /// CPU run does, within a factor (the GPU's per-pass round-off, up to 1.4e-6 of a field in FluidPassKernelTests, is
+    /// larger than one ulp, so it seeds the divergence a little earlier), or within one particle spacing for the front
+    /// (the front is the position of one particle, resolved to about a spacing).
+    /// </summary>
+    public class FluidStepKernelTests
+    {
+        const int Frames = 200;
+        const float FrameSeconds = 1f / 500f;
+        /// <summary>The front reaches the far wall (6a) at about T = 3.4, frame 90; it is compared over the first 80 frames.</summary>
+        const int FrontFrames = 80;
+
+        sealed class Run
+        {
+            /// <summary>Bulk front (m) after each of the first <see cref="FrontFrames"/> frames (before the front reaches the far wall).</summary>
+            public double[] Front = new double[FrontFrames];
+            public double[] Histogram;
+            public int Count, Substeps;
+        }
+
+        static FluidConstants DamBreak(FluidSolverKind solver, out float3 columnTop)
+        {
+            float a = (float)MartinMoyce1952.ColumnWidth, dx = a / 10f;
+            FluidParameters p = FluidParameters.Default;
+            p.Solver = solver;
+            p.ParticleSpacing = dx;
+            p.DomainMin = float3.zero;
+            p.DomainMax = new float3(6f * a, 3f * a, 4f * dx);
+            p.Gravity = new float3(0f, -9.81f, 0f);
+            p.MaxSubsteps = FluidParameters.SubstepLimit;
+            columnTop = new float3(a, 2f * a, 4f * dx);
+            return new FluidConstants(p);
+        }
+
+        static FluidBuffers Column(in FluidConstants c, float3 top, float jitter)
+        {
+            var b = new FluidBuffers(FluidScene.BlockCount(float3.zero, top, c.Parameters.ParticleSpacing), c.Grid);
+            FluidScene.FillBlock(b, float3.zero, top, c.Parameters.ParticleSpacing);
+            if (jitter > 0f)
+            {
+                var random = new Unity.Mathematics.Random(5u);
+                for (int i = 0; i < b.Status.Count; i++)
+                    b.Positions[i] += random.NextFloat3(-jitter, jitter);
+            }
+            return b;
+        }
+
+        /// <summary>Histogram of ρ/ρ₀ over [0.8, 1.2] in 20 bins (fractions of the particles), and the bulk front.</summary>
+        static Run Measure(FluidBuffers b, in FluidConstants c, int substeps, Run run)
+        {
+            var h = new double[20];
+            int n = b.Status.Count;
+            for (int i = 0; i < n; i++)
+            {
+                int bin = (int)Math.Floor((b.Densities[i] / c.Parameters.RestDensity - 0.8) / 0.02);
+                h[Math.Clamp(bin, 0, 19)] += 1.0 / n;
+            }
+            run.Histogram = h;
+            run.Count = n;
+            run.Substeps = substeps;
+            return run;
+        }
+
+        static Run Cpu(in FluidConstants c, float3 top, float jitter)
+        {
+            FluidBuffers b = Column(c, top, jitter);
+            int substeps = 0;
+            var run = new Run();
+            for (int f = 0; f < Frames; f++)
+            {
+                substeps += FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, FrameSeconds, b.Particles, b.Scratch, ref b.Status).Substeps;
+                if (f < FrontFrames)
+                    run.Front[f] = FluidScene.BulkFront(b, c.Parameters.ParticleSpacing, 4);
+            }
+            return Measure(b, c, substeps, run);
+        }
+
+        static Run Gpu(LavapipeDevice device, LavapipeComputeShader shader, in FluidConstants c, float3 top)
+        {
+            FluidBuffers b = Column(c, top, 0f);
+            using var g = new LavapipeFluidSolver(device, shader, c, b.Capacity);
+            g.Upload(b.Particles, b.Status.Count);
+            int substeps = 0;
+            var run = new Run();
+            FluidBuffers back = null;
+            for (int f = 0; f < Frames; f++)
+            {
+                substeps += g.Step(FrameSeconds, ref b.Status).Substeps;
+                if (f < FrontFrames)
+                {
+                    back = GpuState.Download(g, c, b.Capacity, c.Grid.CellCount);
+                    run.Front[f] = FluidScene.BulkFront(back, c.Parameters.ParticleSpacing, 4);
+                }
+            }
+            back = GpuState.Download(g, c, b.Capacity, c.Grid.CellCount);
+            return Measure(back, c, substeps, run);
+        }
+
+        static double MaxDifference(double[] a, double[] b)
+        {
+            double d = 0;
+            for (int i = 0; i < a.Length; i++)
+                d = Math.Max(d, Math.Abs(a[i] - b[i]));
+            return d;
+        }
+
+        static double L1(double[] a, double[] b)
+        {
+            double s = 0;
+            for (int i = 0; i < a.Length; i++)
+                s += Math.Abs(a[i] - b[i]);
+            return s;
+        }
+
+        [TestCase(FluidSolverKind.WeaklyCompressible)]
+        [TestCase(FluidSolverKind.PositionBased)]
+        public void DamBreak200Frames_IsStatisticallyTheCpuRun(FluidSolverKind solver)
+        {
+            FluidConstants c = DamBreak(solver, out float3 top);
+            float dx = c.Parameters.ParticleSpacing;
+            Run cpu = Cpu(c, top, 0f);
+            Run perturbed = Cpu(c, top, 1e-7f);
+            Run gpu = Gpu(Lavapipe.Device, Lavapipe.FluidShader, c, top);
+            Lavapipe.AssertValid();
+            double frontGpu = MaxDifference(gpu.Front, cpu.Front), frontPerturbed = MaxDifference(perturbed.Front, cpu.Front);
+            double histGpu = L1(gpu.Histogram, cpu.Histogram), histPerturbed = L1(perturbed.Histogram, cpu.Histogram);
+            TestContext.Out.WriteLine($"{solver}, {cpu.Count} particles, {Frames} frames of {FrameSeconds} s: substeps CPU {cpu.Substeps}, GPU {gpu.Substeps}");
+            TestContext.Out.WriteLine($"front over the first {FrontFrames} frames, largest |Δ| to the CPU run (m): GPU {frontGpu:E2}, CPU perturbed by 1e-7 m {frontPerturbed:E2}; spacing {dx:F5}; CPU front at frame {FrontFrames}: {cpu.Front[FrontFrames - 1]:F4}");
+            TestContext.Out.WriteLine($"density histogram L1 distance to the CPU run: GPU {histGpu:F4}, CPU perturbed {histPerturbed:F4}");
+            Assert.That(gpu.Count, Is.EqualTo(cpu.Count), "no particle lost or gained");
+            Assert.That(frontGpu, Is.LessThanOrEqualTo(Math.Max(3 * frontPerturbed, dx)), "front position");
+            Assert.That(histGpu, Is.LessThanOrEqualTo(Math.Max(3 * histPerturbed, 0.05)), "density histogram");
+            Assert.That(Math.Abs(gpu.Substeps - cpu.Substeps), Is.LessThanOrEqualTo(Math.Max(3 * Math.Abs(perturbed.Substeps - cpu.Substeps), 0.05 * cpu.Substeps)),
+                "substeps (they follow the fastest particle, one extreme of a chaotic flow: 5 % of the total is allowed)");
+        }
+
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(65)]
+        public void Step_OddCounts_KeepEveryParticleAndStayFinite(int count)
+        {
+            FluidConstants c = DamBreak(FluidSolverKind.WeaklyCompressible, out _);
+            var b = new FluidBuffers(Math.Max(count, 1), c.Grid);
+            var random = new Unity.Mathematics.Random(11u);
+            for (int i = 0; i < count; i++)
+            {
+                b.Positions[i] = random.NextFloat3(new float3(0.1f), new float3(0.2f, 0.2f, 0.02f));
+                b.Ids[i] = i;
+            }
+            b.Status.Count = count;
+            using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, Math.Max(count, 1));
+            g.Upload(b.Particles, count);
+            for (int f = 0; f < 5; f++)
+                g.Step(1f / 60f, ref b.Status);
+            Lavapipe.AssertValid();
+            FluidBuffers back = GpuState.Download(g, c, Math.Max(count, 1), c.Grid.CellCount);
+            Assert.That(back.Status.Count, Is.EqualTo(count));
+            for (int i = 0; i < count; i++)
+                Assert.That(math.all(math.isfinite(back.Positions[i])) && math.all(back.Positions[i] >= c.Parameters.DomainMin)
+                    && math.all(back.Positions[i] <= c.Parameters.DomainMax), Is.True, $"particle {i} at {back.Positions[i]}");
+        }
+    }
+}
