@@ -1,0 +1,210 @@
+using System;
+using SoftBodyDynamics.Solvers;
+using Unity.Collections;
+using Unity.Mathematics;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace SoftBodyDynamics.Compute
+{
+    /// <summary>
+    /// A fluid on the GPU: FluidSolver.compute driven through <see cref="FluidComputeStep"/> (the recorder the lavapipe
+    /// tests run). Every <see cref="FluidComputeBuffer"/> is a <see cref="GraphicsBuffer"/> created once, grown by doubling
+    /// (contents kept) and bound to every kernel by a cached property ID; group counts come from each kernel's reflected
+    /// size; particle kernels are dispatched indirectly, since only the GPU knows the live count. The particle state stays
+    /// on the GPU. The step's counters, the live count and the fastest speed come back through an asynchronous read-back,
+    /// so the substeps of a step follow the speed read back from an earlier one (never a stall).
+    /// </summary>
+    public sealed class FluidComputeSolver : IFluidComputeCommands, IDisposable
+    {
+        static readonly int[] s_BufferIds = PropertyIds(Enum.GetNames(typeof(FluidComputeBuffer)));
+        static readonly int[] s_GlobalIds = PropertyIds(Enum.GetNames(typeof(FluidComputeGlobal)));
+
+        readonly ComputeShader m_Shader;
+        readonly int[] m_Kernels;
+        readonly int[] m_GroupSizes;
+        readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[s_BufferIds.Length];
+        readonly int[] m_Ints = new int[4];
+        readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
+        FluidConstants m_Constants;
+        int m_Capacity;
+        bool m_ReadbackPending, m_Disposed;
+        float m_LastMaxSpeed;
+
+        static int[] PropertyIds(string[] names)
+        {
+            var ids = new int[names.Length];
+            for (int i = 0; i < names.Length; i++)
+                ids[i] = Shader.PropertyToID("_" + names[i]);
+            return ids;
+        }
+
+        /// <summary>A solver for the fluid <paramref name="constants"/> with room for <paramref name="capacity"/> particles.</summary>
+        public FluidComputeSolver(ComputeShader shader, in FluidConstants constants, int capacity)
+        {
+            m_Shader = shader;
+            m_Constants = constants;
+            string[] names = Enum.GetNames(typeof(FluidKernel));
+            m_Kernels = new int[names.Length];
+            m_GroupSizes = new int[names.Length];
+            for (int k = 0; k < names.Length; k++)
+            {
+                m_Kernels[k] = shader.FindKernel(names[k]);
+                shader.GetKernelThreadGroupSizes(m_Kernels[k], out uint x, out _, out _);
+                m_GroupSizes[k] = (int)x;
+            }
+            Allocate(math.max(capacity, 1));
+        }
+
+        /// <summary>Particle slots on the GPU.</summary>
+        public int Capacity => m_Capacity;
+        /// <summary>Live particles at the last completed read-back.</summary>
+        public int LastKnownCount => (int)m_Stats[FluidComputeLayout.StatLive];
+        /// <summary>The counters of the last step whose read-back completed.</summary>
+        public ReadOnlySpan<uint> LastStats => m_Stats;
+        /// <summary>A buffer, for the renderer (positions) or a read-back (<see cref="FluidComputeBuffer.Positions"/>: xyz, age in w).</summary>
+        public GraphicsBuffer Buffer(FluidComputeBuffer buffer) => m_Buffers[(int)buffer];
+
+        void Allocate(int capacity)
+        {
+            int cells = m_Constants.Grid.CellCount;
+            for (int b = 0; b < m_Buffers.Length; b++)
+            {
+                var id = (FluidComputeBuffer)b;
+                int length = FluidComputeLayout.Length(id, capacity, cells);
+                GraphicsBuffer old = m_Buffers[b];
+                if (old != null && old.count >= length)
+                    continue;
+                var target = id == FluidComputeBuffer.Args ? GraphicsBuffer.Target.Structured | GraphicsBuffer.Target.IndirectArguments : GraphicsBuffer.Target.Structured;
+                var created = new GraphicsBuffer(target | GraphicsBuffer.Target.CopyDestination | GraphicsBuffer.Target.CopySource, length, FluidComputeLayout.Stride(id));
+                if (old != null)
+                {
+                    Graphics.CopyBuffer(old, created);
+                    old.Release();
+                }
+                m_Buffers[b] = created;
+            }
+            m_Capacity = capacity;
+            for (int k = 0; k < m_Kernels.Length; k++)
+                for (int b = 0; b < m_Buffers.Length; b++)
+                    m_Shader.SetBuffer(m_Kernels[k], s_BufferIds[b], m_Buffers[b]);
+        }
+
+        /// <summary>Grows every buffer to at least <paramref name="capacity"/> particles by doubling, keeping the state.</summary>
+        public void EnsureCapacity(int capacity)
+        {
+            if (capacity <= m_Capacity)
+                return;
+            int grown = m_Capacity;
+            while (grown < capacity)
+                grown *= 2;
+            Allocate(grown);
+        }
+
+        /// <summary>
+        /// Replaces the particles with <paramref name="count"/> packed ones (<see cref="FluidComputeStep.Pack"/>: position
+        /// with age, velocity with lifetime, extras), growing the buffers when needed.
+        /// </summary>
+        public void Upload(NativeArray<float4> positions, NativeArray<float4> velocities, NativeArray<FluidComputeExtras> extras, int count)
+        {
+            EnsureCapacity(count);
+            m_Buffers[(int)FluidComputeBuffer.Positions].SetData(positions, 0, 0, count);
+            m_Buffers[(int)FluidComputeBuffer.Velocities].SetData(velocities, 0, 0, count);
+            m_Buffers[(int)FluidComputeBuffer.Extras].SetData(extras, 0, 0, count);
+            var stats = new NativeArray<uint>(FluidComputeLayout.StatCount, Allocator.Temp);
+            stats[FluidComputeLayout.StatLive] = (uint)count;
+            m_Buffers[(int)FluidComputeBuffer.Stats].SetData(stats, 0, 0, stats.Length);
+            var args = new NativeArray<uint>(3, Allocator.Temp);
+            args[0] = (uint)((count + FluidComputeLayout.ThreadGroupSize - 1) / FluidComputeLayout.ThreadGroupSize);
+            args[1] = 1;
+            args[2] = 1;
+            m_Buffers[(int)FluidComputeBuffer.Args].SetData(args, 0, 0, 3);
+            m_Stats[FluidComputeLayout.StatLive] = (uint)count;
+        }
+
+        /// <summary>
+        /// Appends <paramref name="count"/> packed particles (a tap's spawns) after the live ones, up to the capacity; the
+        /// caller grows the capacity first when its own count says so.
+        /// </summary>
+        public void Emit(NativeArray<float4> positions, NativeArray<float4> velocities, NativeArray<FluidComputeExtras> extras, int count)
+        {
+            if (count <= 0)
+                return;
+            EnsureCapacity(count);
+            m_Buffers[(int)FluidComputeBuffer.PositionsOut].SetData(positions, 0, 0, count);
+            m_Buffers[(int)FluidComputeBuffer.VelocitiesOut].SetData(velocities, 0, 0, count);
+            m_Buffers[(int)FluidComputeBuffer.ExtrasOut].SetData(extras, 0, 0, count);
+            var self = this;
+            FluidComputeStep.RecordEmit(ref self, count, m_Capacity);
+        }
+
+        /// <summary>
+        /// Dispatches one step of <paramref name="dt"/> seconds (no colliders: see <see cref="FluidBackendChoice"/>). The
+        /// substeps follow the fastest speed of the last completed read-back; returns the substeps dispatched.
+        /// </summary>
+        public int Step(float dt)
+        {
+            if (!(dt > 0f) || !math.isfinite(dt))
+                return 0;
+            var self = this;
+            FluidComputeStep.RecordBegin(ref self, FluidComputeConstants.Of(m_Constants, 0f, dt));
+            int2 substeps = FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt);
+            float h = dt / substeps.y;
+            Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
+            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, false, passes);
+            FluidComputeStep.RecordSubsteps(ref self, m_Constants, FluidComputeConstants.Of(m_Constants, h, dt), substeps.y, passes.Slice(0, passCount));
+            RequestStats();
+            return substeps.y;
+        }
+
+        void RequestStats()
+        {
+            if (m_ReadbackPending)
+                return;
+            m_ReadbackPending = true;
+            AsyncGPUReadback.Request(m_Buffers[(int)FluidComputeBuffer.Stats], OnStats);
+        }
+
+        void OnStats(AsyncGPUReadbackRequest request)
+        {
+            m_ReadbackPending = false;
+            if (m_Disposed || request.hasError)
+                return;
+            NativeArray<uint> data = request.GetData<uint>();
+            for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
+                m_Stats[i] = data[i];
+            m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
+        }
+
+        public void SetVector(FluidComputeGlobal name, float4 value) =>
+            m_Shader.SetVector(s_GlobalIds[(int)name], new Vector4(value.x, value.y, value.z, value.w));
+
+        public void SetInts(FluidComputeGlobal name, int4 value)
+        {
+            m_Ints[0] = value.x; m_Ints[1] = value.y; m_Ints[2] = value.z; m_Ints[3] = value.w;
+            m_Shader.SetInts(s_GlobalIds[(int)name], m_Ints);
+        }
+
+        public void Dispatch(FluidKernel kernel, int threads)
+        {
+            if (threads <= 0)
+                return;
+            int group = m_GroupSizes[(int)kernel];
+            m_Shader.Dispatch(m_Kernels[(int)kernel], (threads + group - 1) / group, 1, 1);
+        }
+
+        public void DispatchIndirect(FluidKernel kernel) =>
+            m_Shader.DispatchIndirect(m_Kernels[(int)kernel], m_Buffers[(int)FluidComputeBuffer.Args], 0);
+
+        /// <summary>Releases every buffer.</summary>
+        public void Dispose()
+        {
+            m_Disposed = true;
+            for (int b = 0; b < m_Buffers.Length; b++)
+            {
+                m_Buffers[b]?.Release();
+                m_Buffers[b] = null;
+            }
+        }
+    }
+}

@@ -1,0 +1,36 @@
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>Where a fluid is simulated.</summary>
+    public enum FluidBackend : byte
+    {
+        /// <summary>Burst jobs on the CPU.</summary>
+        Cpu,
+        /// <summary>Compute shaders (falls back to the CPU, with a warning, where they cannot run this fluid).</summary>
+        Gpu,
+        /// <summary>The GPU where it can run this fluid, the CPU otherwise (said once in the console).</summary>
+        Auto,
+    }
+
+    /// <summary>The choice between the CPU and GPU paths for a fluid, and the reason when the GPU is not taken.</summary>
+    public static class FluidBackendChoice
+    {
+        /// <summary>
+        /// True when the fluid runs on the GPU: asked for (<see cref="FluidBackend.Gpu"/> or <see cref="FluidBackend.Auto"/>),
+        /// the device runs compute shaders and reads buffers back asynchronously, and the fluid has no colliders (not yet
+        /// simulated by the kernels). Otherwise false, with the reason in <paramref name="reason"/> (null when the CPU was asked for).
+        /// </summary>
+        public static bool UseGpu(FluidBackend requested, bool supportsComputeShaders, bool supportsAsyncReadback, bool hasColliders, out string reason)
+        {
+            reason = null;
+            if (requested == FluidBackend.Cpu)
+                return false;
+            if (!supportsComputeShaders)
+                reason = "this device does not run compute shaders";
+            else if (!supportsAsyncReadback)
+                reason = "this device cannot read GPU buffers back asynchronously";
+            else if (hasColliders)
+                reason = "colliders are not yet simulated on the GPU";
+            return reason == null;
+        }
+    }
+}

@@ -1,0 +1,15 @@
+namespace UnityEngine
+{
+    // https://docs.unity3d.com/ScriptReference/SystemInfo.html
+    public sealed class SystemInfo
+    {
+        // https://docs.unity3d.com/ScriptReference/SystemInfo-supportsComputeShaders.html
+        public static bool supportsComputeShaders => throw null;
+
+        // https://docs.unity3d.com/ScriptReference/SystemInfo-supportsAsyncGPUReadback.html
+        public static bool supportsAsyncGPUReadback => throw null;
+
+        // https://docs.unity3d.com/ScriptReference/SystemInfo-maxComputeWorkGroupSize.html
+        public static int maxComputeWorkGroupSize => throw null;
+    }
+}
