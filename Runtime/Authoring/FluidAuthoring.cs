@@ -106,6 +106,19 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Entities storage: the prefab (with a Metaball Particle component) every particle is instantiated from.")]
         public MetaballParticleAuthoring particlePrefab;
 
+        [Tooltip("Where the fluid runs. CPU: Burst jobs. GPU: compute shaders (Packed storage; falls back to the CPU with a warning when the device cannot). Auto: the GPU where it can, the CPU otherwise. Default CPU.")]
+        public SoftBodyDynamics.Solvers.FluidBackend backend = SoftBodyDynamics.Solvers.FluidBackend.Cpu;
+
+        [Tooltip("GPU: the fluid kernels, Runtime/Compute/FluidSolver.compute of this package.")]
+        public ComputeShader computeShader;
+
+        [Tooltip("GPU: when the particles are copied back into the fluid's entity buffers for gameplay code (asynchronously, a frame or two late). Never keeps them on the GPU.")]
+        public FluidReadback readback = FluidReadback.Never;
+
+        [Tooltip("GPU, every N frames: fixed steps between read-backs (≥ 1).")]
+        [Min(1)]
+        public int readbackInterval = 10;
+
         [Tooltip("Coulomb friction against colliders (0 = free slip).")]
         [Min(0f)]
         public float wallFriction;

@@ -21,6 +21,15 @@ namespace SoftBodyDynamics.Authoring
             if (authoring.storage == FluidStorage.Entities && authoring.particlePrefab == null)
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidPrefabMissing, -1,
                     "Entities storage needs a particle prefab with a Metaball Particle component; assign one or use Packed storage."));
+            if (authoring.backend != FluidBackend.Cpu && authoring.computeShader == null)
+                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidComputeShaderMissing, -1,
+                    "The fluid asks for the GPU but has no compute shader: assign Runtime/Compute/FluidSolver.compute, or it runs on the CPU."));
+            if (authoring.backend != FluidBackend.Cpu && authoring.storage == FluidStorage.Entities)
+                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidGpuNeedsPackedStorage, -1,
+                    "Entities storage (one entity per particle) runs on the CPU; use Packed storage to run the fluid on the GPU."));
+            if (authoring.backend != FluidBackend.Cpu && authoring.readback == FluidReadback.EveryNFrames && authoring.readbackInterval < 1)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidReadbackIntervalInvalid, -1,
+                    $"The read-back interval is {authoring.readbackInterval} frames; it must be at least 1."));
             if (BakeIssueLog.Report(issues, "Fluid", authoring, "The fluid was not baked."))
                 return;
 
@@ -32,7 +41,12 @@ namespace SoftBodyDynamics.Authoring
                 Color = authoring.PresetColor,
                 Storage = authoring.storage,
                 ParticlePrefab = authoring.storage == FluidStorage.Entities ? GetEntity(authoring.particlePrefab, TransformUsageFlags.Dynamic) : Entity.Null,
+                Backend = authoring.backend,
+                Readback = authoring.readback,
+                ReadbackInterval = authoring.readbackInterval,
             });
+            if (authoring.backend != FluidBackend.Cpu && authoring.computeShader != null)
+                AddComponent(entity, new FluidComputeShader { Shader = authoring.computeShader });
             AddComponent(entity, new FluidRuntime());
             AddBuffer<FluidPosition>(entity);
             AddBuffer<FluidVelocity>(entity);

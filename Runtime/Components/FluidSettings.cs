@@ -21,6 +21,12 @@ namespace SoftBodyDynamics
         public FluidStorage Storage;
         /// <summary>Entities storage: the particle prefab (with <see cref="FluidParticle"/>) new particles are instantiated from.</summary>
         public Entity ParticlePrefab;
+        /// <summary>CPU (Burst jobs), GPU (compute shaders, with a fallback) or Auto (see <see cref="FluidBackendChoice"/>). Packed storage only.</summary>
+        public FluidBackend Backend;
+        /// <summary>GPU: when the particles are copied back into the entity buffers.</summary>
+        public FluidReadback Readback;
+        /// <summary>GPU, <see cref="FluidReadback.EveryNFrames"/>: fixed steps between read-backs (≥ 1).</summary>
+        public int ReadbackInterval;
     }
 
     /// <summary>The fluid's counters and what its last frame did.</summary>

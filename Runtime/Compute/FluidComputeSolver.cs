@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Compute
         readonly int[] m_Ints = new int[4];
         readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
         FluidConstants m_Constants;
-        int m_Capacity;
+        int m_Capacity, m_Colliders, m_Drains;
         bool m_ReadbackPending, m_Disposed;
         float m_LastMaxSpeed;
 
@@ -71,7 +71,7 @@ namespace SoftBodyDynamics.Compute
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 var id = (FluidComputeBuffer)b;
-                int length = FluidComputeLayout.Length(id, capacity, cells);
+                int length = FluidComputeLayout.Length(id, capacity, cells, m_Colliders + m_Drains);
                 GraphicsBuffer old = m_Buffers[b];
                 if (old != null && old.count >= length)
                     continue;
@@ -89,6 +89,19 @@ namespace SoftBodyDynamics.Compute
                 for (int b = 0; b < m_Buffers.Length; b++)
                     m_Shader.SetBuffer(m_Kernels[k], s_BufferIds[b], m_Buffers[b]);
         }
+
+        /// <summary>Uploads the colliders (world space) and drains of the following steps.</summary>
+        public void SetShapes(NativeArray<ColliderShape> colliders, NativeArray<FluidDrain> drains)
+        {
+            m_Colliders = colliders.Length;
+            m_Drains = drains.Length;
+            Allocate(m_Capacity);
+            var packed = new NativeArray<float4>(FluidComputeLayout.ShapeFloat4s * math.max(m_Colliders + m_Drains, 1), Allocator.Temp);
+            int n = FluidComputeStep.PackShapes(colliders.AsReadOnlySpan(), drains.AsReadOnlySpan(), packed.AsSpan());
+            m_Buffers[(int)FluidComputeBuffer.Shapes].SetData(packed, 0, 0, math.max(n, 1));
+        }
+
+        FluidComputeConstants ConstantsOf(float h, float dt) => FluidComputeConstants.Of(m_Constants, h, dt, m_Colliders, m_Drains);
 
         /// <summary>Grows every buffer to at least <paramref name="capacity"/> particles by doubling, keeping the state.</summary>
         public void EnsureCapacity(int capacity)
@@ -139,20 +152,21 @@ namespace SoftBodyDynamics.Compute
         }
 
         /// <summary>
-        /// Dispatches one step of <paramref name="dt"/> seconds (no colliders: see <see cref="FluidBackendChoice"/>). The
-        /// substeps follow the fastest speed of the last completed read-back; returns the substeps dispatched.
+        /// Dispatches one step of <paramref name="dt"/> seconds: the drains, then the substeps, which follow the fastest
+        /// speed of the last completed read-back. Returns the substeps dispatched.
         /// </summary>
         public int Step(float dt)
         {
             if (!(dt > 0f) || !math.isfinite(dt))
                 return 0;
             var self = this;
-            FluidComputeStep.RecordBegin(ref self, FluidComputeConstants.Of(m_Constants, 0f, dt));
+            FluidComputeStep.RecordDrain(ref self, ConstantsOf(0f, dt));
+            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, dt));
             int2 substeps = FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt);
             float h = dt / substeps.y;
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, false, passes);
-            FluidComputeStep.RecordSubsteps(ref self, m_Constants, FluidComputeConstants.Of(m_Constants, h, dt), substeps.y, passes.Slice(0, passCount));
+            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
+            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(h, dt), substeps.y, passes.Slice(0, passCount));
             RequestStats();
             return substeps.y;
         }

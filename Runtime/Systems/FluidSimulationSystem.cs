@@ -9,7 +9,7 @@ using Unity.Transforms;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Steps every fluid once per fixed step, with its drains and taps (<see cref="FluidFrame.Advance"/>, the same function
+    /// Steps every fluid the GPU does not run (<see cref="FluidOnGpu"/>, <see cref="FluidComputeSystem"/>) once per fixed step, with its drains and taps (<see cref="FluidFrame.Advance"/>, the same function
     /// the .NET tests call, through <see cref="FluidSystemFrame"/>). Runs only while some entity has
     /// <see cref="FluidSettings"/>: a scene without a fluid pays nothing for it.
     /// <list type="bullet">
@@ -41,7 +41,7 @@ namespace SoftBodyDynamics
             m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
             m_Taps = SystemAPI.QueryBuilder().WithAll<FluidTap>().Build();
             m_Drains = SystemAPI.QueryBuilder().WithAll<FluidDrainVolume>().Build();
-            m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime>().Build();
+            m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime>().WithNone<FluidOnGpu>().Build();
             m_Particles = SystemAPI.QueryBuilder().WithAll<FluidParticle, LocalTransform>().Build();
         }
 
@@ -121,7 +121,7 @@ namespace SoftBodyDynamics
             counters.Dispose();
         }
 
-        static FluidEntityArrays Arrays(EntityManager m, Entity fluid) => new FluidEntityArrays
+        internal static FluidEntityArrays Arrays(EntityManager m, Entity fluid) => new FluidEntityArrays
         {
             Positions = m.GetBuffer<FluidPosition>(fluid),
             Velocities = m.GetBuffer<FluidVelocity>(fluid),

@@ -55,9 +55,20 @@ namespace SoftBodyDynamics
             NativeArray<FluidDrainVolume> drainVolumes, float dt)
         {
             int budget = math.max(1, settings.Budget);
-            FluidParticles particles = Particles(a);
             FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
+            return DrainAndEmit(entity, constants, ref runtime.Status, ref runtime.Prewarmed, a.Taps, Particles(a), scratch, budget, colliders, taps,
+                tapEntities, drainVolumes, dt);
+        }
 
+        /// <summary>
+        /// The same on given particle arrays and tap states (the GPU path spawns into a staging area with its own status):
+        /// <paramref name="prewarmed"/> false runs the taps' prewarm first and sets it.
+        /// </summary>
+        public static FluidFrameReport DrainAndEmit(Entity entity, in FluidConstants constants, ref FluidStatus status, ref bool prewarmed,
+            DynamicBuffer<FluidTapRuntime> tapStates, FluidParticles particles, FluidScratch scratch, int budget,
+            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<FluidDrainVolume> drainVolumes, float dt)
+        {
             var instances = new NativeArray<FluidTapInstance>(taps.Length, Allocator.Temp);
             var bursts = new NativeArray<FluidTapBurst>(taps.Length * FluidTap.MaxBursts, Allocator.Temp);
             var owners = new NativeArray<int>(taps.Length, Allocator.Temp);
@@ -67,11 +78,11 @@ namespace SoftBodyDynamics
                 if (taps[t].Fluid != entity)
                     continue;
                 FluidTap tap = taps[t];
-                int slot = FluidEntityBuffers.TapSlot(a.Taps, tapEntities[t]);
+                int slot = FluidEntityBuffers.TapSlot(tapStates, tapEntities[t]);
                 int count = math.clamp(tap.BurstCount, 0, FluidTap.MaxBursts);
                 for (int b = 0; b < count; b++)
                     bursts[burstCount + b] = tap.Burst(b);
-                instances[tapCount] = new FluidTapInstance { Settings = tap.Settings, State = a.Taps[slot].State, BurstStart = burstCount, BurstCount = count };
+                instances[tapCount] = new FluidTapInstance { Settings = tap.Settings, State = tapStates[slot].State, BurstStart = burstCount, BurstCount = count };
                 owners[tapCount++] = slot;
                 burstCount += count;
             }
@@ -84,18 +95,18 @@ namespace SoftBodyDynamics
             var tapSpan = instances.AsSpan().Slice(0, tapCount);
             var burstSpan = bursts.AsReadOnlySpan().Slice(0, burstCount);
             var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
-            if (!runtime.Prewarmed)
+            if (!prewarmed)
             {
                 FluidFrame.Prewarm(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), drainSpan, tapSpan, burstSpan, budget, dt,
-                    particles, scratch, ref runtime.Status);
-                runtime.Prewarmed = true;
+                    particles, scratch, ref status);
+                prewarmed = true;
             }
-            FluidFrameReport report = FluidFrame.DrainAndEmit(constants, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref runtime.Status);
+            FluidFrameReport report = FluidFrame.DrainAndEmit(constants, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref status);
             for (int t = 0; t < tapCount; t++)
             {
-                FluidTapRuntime r = a.Taps[owners[t]];
+                FluidTapRuntime r = tapStates[owners[t]];
                 r.State = instances[t].State;
-                a.Taps[owners[t]] = r;
+                tapStates[owners[t]] = r;
             }
             instances.Dispose();
             bursts.Dispose();

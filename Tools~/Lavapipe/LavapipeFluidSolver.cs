@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.Lavapipe
         readonly string[] m_GlobalNames;
         readonly LavapipeBuffer[] m_Buffers = new LavapipeBuffer[Enum.GetValues(typeof(FluidComputeBuffer)).Length];
         FluidConstants m_Constants;
-        int m_Capacity, m_Cells;
+        int m_Capacity, m_Cells, m_Colliders, m_Drains;
 
         /// <summary>When set, every dispatch is submitted alone and its time added to <see cref="KernelMilliseconds"/>.</summary>
         public bool TimeKernels;
@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Lavapipe
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 var id = (FluidComputeBuffer)b;
-                long bytes = (long)FluidComputeLayout.Length(id, capacity, cells) * FluidComputeLayout.Stride(id);
+                long bytes = (long)FluidComputeLayout.Length(id, capacity, cells, m_Colliders + m_Drains) * FluidComputeLayout.Stride(id);
                 LavapipeBuffer old = m_Buffers[b];
                 if (old != null && old.Bytes >= bytes)
                     continue;
@@ -94,12 +94,33 @@ namespace SoftBodyDynamics.Lavapipe
             Allocate(grown, m_Cells);
         }
 
+        /// <summary>Uploads the colliders (world space) and drains the following steps use.</summary>
+        public void SetShapes(ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<FluidDrain> drains)
+        {
+            m_Colliders = colliders.Length;
+            m_Drains = drains.Length;
+            Allocate(m_Capacity, m_Cells);
+            FluidComputeStep.PackShapes(colliders, drains, Buffer(FluidComputeBuffer.Shapes).As<float4>());
+        }
+
+        /// <summary>The constants of a step of <paramref name="dt"/> with substeps of <paramref name="h"/>, with this solver's shapes.</summary>
+        public FluidComputeConstants ConstantsOf(float h, float dt) => FluidComputeConstants.Of(m_Constants, h, dt, m_Colliders, m_Drains);
+
+        /// <summary>Marks the particles inside a drain (the next step's sort removes them), like <see cref="FluidDrain.Apply"/>.</summary>
+        public void Drain()
+        {
+            var self = this;
+            FluidComputeStep.RecordDrain(ref self, ConstantsOf(0f, 0f));
+            Flush();
+        }
+
         /// <summary>Copies the first <paramref name="count"/> particles to the GPU (growing the buffers if needed).</summary>
         public void Upload(FluidParticles p, int count)
         {
             EnsureCapacity(count);
             FluidComputeStep.Pack(p, count, Buffer(FluidComputeBuffer.Positions).As<float4>(), Buffer(FluidComputeBuffer.Velocities).As<float4>(),
                 Buffer(FluidComputeBuffer.Extras).As<FluidComputeExtras>());
+            Stats.Clear();
             Stats[FluidComputeLayout.StatLive] = (uint)count;
             WriteArgs(count);
         }
@@ -141,14 +162,14 @@ namespace SoftBodyDynamics.Lavapipe
             var self = this;
             if (!(dt > 0f) || !math.isfinite(dt))
                 return FluidSolver.Finish(new FluidSolver.Plan(), new FluidPassCounters(), dt, Count, ref status);
-            FluidComputeStep.RecordBegin(ref self, FluidComputeConstants.Of(m_Constants, 0f, dt));
+            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, dt));
             Flush();
             float maxSpeed = math.min(math.sqrt(math.asfloat(Stats[FluidComputeLayout.StatMaxSpeedSquared])), m_Constants.Parameters.MaxSpeed);
             int2 substeps = FluidSolver.Substeps(m_Constants, maxSpeed, dt);
             var plan = new FluidSolver.Plan { Substeps = substeps.y, SubstepsWanted = substeps.x, H = dt / substeps.y };
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, false, passes);
-            FluidComputeStep.RecordSubsteps(ref self, m_Constants, FluidComputeConstants.Of(m_Constants, plan.H, dt), plan.Substeps, passes.Slice(0, passCount));
+            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
+            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, dt), plan.Substeps, passes.Slice(0, passCount));
             Flush();
             return FluidSolver.Finish(plan, Counters(), dt, Count, ref status);
         }
@@ -166,6 +187,7 @@ namespace SoftBodyDynamics.Lavapipe
                 OverCompressed = (int)s[FluidComputeLayout.StatOverCompressed],
                 NeighbourOverflow = (int)s[FluidComputeLayout.StatNeighbourOverflow],
                 MaxDensityRatio = math.asfloat(s[FluidComputeLayout.StatMaxDensityRatio]),
+                Contacts = (int)s[FluidComputeLayout.StatContacts],
             };
         }
 

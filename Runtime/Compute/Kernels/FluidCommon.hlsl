@@ -20,7 +20,12 @@
 #define STAT_NEIGHBOUR_OVERFLOW 6
 #define STAT_MAX_DENSITY_RATIO 7
 #define STAT_MAX_SPEED_SQUARED 8
-#define STAT_COUNT 9
+#define STAT_CONTACTS 9
+// Totals since the particles were uploaded (ClearStats keeps them): removals the CPU reads back asynchronously.
+#define STAT_TOTAL_KILLED 10
+#define STAT_TOTAL_EXPIRED 11
+#define STAT_TOTAL_INVALID 12
+#define STAT_COUNT 13
 
 // Particle state (FluidParticles): ping-ponged by the permutation of the sort.
 RWStructuredBuffer<float4> _Positions;   // xyz position (m), w age (s)
@@ -46,6 +51,7 @@ RWStructuredBuffer<float4> _VectorsA;
 RWStructuredBuffer<float4> _VectorsB;
 RWStructuredBuffer<uint> _Stats;         // STAT_* counters; STAT_LIVE is the live particle count
 RWStructuredBuffer<uint> _Args;          // indirect dispatch arguments: ceil(live / FLUID_GROUP), 1, 1
+RWStructuredBuffer<float4> _Shapes;      // colliders, then drains: 5 float4 each (FluidColliders.hlsl)
 
 // Constants, computed on the CPU (FluidComputeConstants.Set).
 float4 _GridOrigin;      // xyz grid origin (m), w 1 / cell size (1/m)
@@ -62,6 +68,8 @@ float4 _Smoothing;       // viscosity h·ν·2m·(Laplacian coefficient), alignm
 uint4 _Flags;            // x weakly compressible, y flocking, z Akinci, w unused
 uint4 _Counts;           // x capacity, y spawn count, z scan element count, w scan data offset
 uint4 _Scan;             // x index of the level's block totals in _ScanSums, yzw unused
+uint4 _ShapeCounts;      // x colliders, y drains (in _Shapes), zw unused
+float4 _Colliding;       // x wall friction μ, yzw unused
 
 bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 

@@ -6,11 +6,11 @@
 #define SBD_FLUID_SORT_INCLUDED
 #include "FluidCommon.hlsl"
 
-// Zeroes the step's counters (the live count stays).
+// Zeroes the step's counters (the live count and the totals stay).
 [numthreads(16, 1, 1)]
 void ClearStats(uint3 id : SV_DispatchThreadID)
 {
-    if (id.x > STAT_LIVE && id.x < STAT_COUNT) _Stats[id.x] = 0;
+    if (id.x > STAT_LIVE && id.x < STAT_TOTAL_KILLED) _Stats[id.x] = 0;
 }
 
 // FluidSolver.Begin: ages += dt and the fastest finite speed (as the bits of v², which order like the floats).
@@ -42,9 +42,16 @@ void Keys(uint3 id : SV_DispatchThreadID)
     float4 vl = _Velocities[i];
     float life = vl.w;
     uint key;
-    if (life < 0.0 || isnan(life)) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_KILLED], 1); }
-    else if (life > 0.0 && xa.w >= life) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_EXPIRED], 1); }
-    else if (!IsFinite3(xa.xyz) || !IsFinite3(vl.xyz)) { key = _GridDims.w; InterlockedAdd(_Stats[STAT_INVALID], 1); }
+    uint removed = STAT_COUNT;
+    if (life < 0.0 || isnan(life)) removed = STAT_KILLED;
+    else if (life > 0.0 && xa.w >= life) removed = STAT_EXPIRED;
+    else if (!IsFinite3(xa.xyz) || !IsFinite3(vl.xyz)) removed = STAT_INVALID;
+    if (removed != STAT_COUNT)
+    {
+        key = _GridDims.w;
+        InterlockedAdd(_Stats[removed], 1);
+        InterlockedAdd(_Stats[removed + (STAT_TOTAL_KILLED - STAT_KILLED)], 1);
+    }
     else key = KeyOf(CellOf(xa.xyz));
     _Keys[i] = key;
     uint rank;

@@ -1,8 +1,8 @@
-// The walls of the domain box as the SPH sums see them: a port of FluidBoundary (Sample without colliders,
+// The walls of the domain box and the colliders as the SPH sums see them: a port of FluidBoundary (Sample,
 // ClampToDomain) and of the half-space integrals of SphKernels.
 #ifndef SBD_FLUID_WALLS_INCLUDED
 #define SBD_FLUID_WALLS_INCLUDED
-#include "FluidCommon.hlsl"
+#include "FluidColliders.hlsl"
 
 // SphKernels.WallDensityFraction: ∫W dV of poly6 beyond a plane at distance d, as a fraction of ρ₀.
 float WallDensityFraction(float d)
@@ -23,7 +23,8 @@ float WallGradientMagnitude(float d)
     return 30.0 / _Kernel.x * (s4 / 4.0 - s4 * s / 5.0);
 }
 
-// FluidBoundary.Sample for the six faces of the domain box: the kernel's share outside the fluid, and the push Σ κG(d)·n.
+// FluidBoundary.Sample: the six faces of the domain box and the colliders (each its tangent plane at the closest
+// point): the kernel's share outside the fluid, and the push Σ κG(d)·n.
 void SampleWalls(float3 x, out float densityFraction, out float3 push)
 {
     float h = _Kernel.x, kappa = _DomainMax.w;
@@ -33,7 +34,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
     float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
-    if (nearest >= h) return;
+    if (nearest >= h && _ShapeCounts.x == 0) return;
     [unroll] for (int axis = 0; axis < 3; axis++)
     {
         float dBelow = below[axis], dAbove = above[axis];
@@ -48,6 +49,15 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
             inside *= 1.0 - kappa * WallDensityFraction(dAbove);
             push -= kappa * WallGradientMagnitude(dAbove) * n;
         }
+    }
+    for (uint c = 0; c < _ShapeCounts.x; c++)
+    {
+        // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+        float3 normal; float depth; bool deep;
+        if (!Penetration(LoadShape(c), x, h, normal, depth, deep)) continue;
+        float d = h - depth;
+        inside *= 1.0 - kappa * WallDensityFraction(d);
+        push += kappa * WallGradientMagnitude(d) * normal;
     }
     densityFraction = 1.0 - inside;
 }

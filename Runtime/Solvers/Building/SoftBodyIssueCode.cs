@@ -252,5 +252,11 @@ namespace SoftBodyDynamics.Solvers
         FluidDrainInvalid = 232,
         /// <summary>A fluid with Entities storage has no particle prefab to instantiate.</summary>
         FluidPrefabMissing = 233,
+        /// <summary>A fluid asks for the GPU but no compute shader is assigned: it runs on the CPU.</summary>
+        FluidComputeShaderMissing = 234,
+        /// <summary>A fluid with Entities storage asks for the GPU: one entity per particle needs the CPU path.</summary>
+        FluidGpuNeedsPackedStorage = 235,
+        /// <summary>The GPU read-back interval is below one frame.</summary>
+        FluidReadbackIntervalInvalid = 236,
     }
 }

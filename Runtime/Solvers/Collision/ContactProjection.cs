@@ -14,6 +14,12 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Distance off the surface, as a fraction of the particle radius, from which a particle counts as arriving.</summary>
         const float k_ArrivalFraction = 0.1f;
 
+        /// <summary>
+        /// The closest-point normal contradicts the swept face when their cosine is below −this: normals at right angles
+        /// (a particle sliding over a box edge) are not a contradiction, whatever the sign round-off gives their dot product.
+        /// </summary>
+        public const float OppositeNormals = 1e-4f;
+
         /// <summary>What a substep's contacts need besides the particles and colliders.</summary>
         public struct Settings
         {
@@ -69,7 +75,7 @@ namespace SoftBodyDynamics.Solvers
                     bool hit = ParticleCollision.Penetration(collider, x, radius, out n, out depth, out bool deep);
                     if (collider.Type == ColliderShapeType.Box
                         && ParticleCollision.Sweep(collider, previous[i], x, radius, out float3 entry, out float3 face)
-                        && (!hit || deep || math.dot(n, face) < 0f))
+                        && (!hit || deep || math.dot(n, face) < -OppositeNormals))
                     {
                         n = face;
                         depth = math.dot(entry - x, face);

@@ -16,10 +16,11 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>
         /// True when the fluid runs on the GPU: asked for (<see cref="FluidBackend.Gpu"/> or <see cref="FluidBackend.Auto"/>),
-        /// the device runs compute shaders and reads buffers back asynchronously, and the fluid has no colliders (not yet
-        /// simulated by the kernels). Otherwise false, with the reason in <paramref name="reason"/> (null when the CPU was asked for).
+        /// the device runs compute shaders, reads buffers back asynchronously and allows <see cref="FluidComputeLayout.ThreadGroupSize"/>
+        /// threads per group (<c>SystemInfo.maxComputeWorkGroupSize</c>; OpenGL ES 3.1 guarantees only 128). Otherwise false,
+        /// with the reason in <paramref name="reason"/> (null when the CPU was asked for).
         /// </summary>
-        public static bool UseGpu(FluidBackend requested, bool supportsComputeShaders, bool supportsAsyncReadback, bool hasColliders, out string reason)
+        public static bool UseGpu(FluidBackend requested, bool supportsComputeShaders, bool supportsAsyncReadback, int maxWorkGroupSize, out string reason)
         {
             reason = null;
             if (requested == FluidBackend.Cpu)
@@ -28,8 +29,8 @@ namespace SoftBodyDynamics.Solvers
                 reason = "this device does not run compute shaders";
             else if (!supportsAsyncReadback)
                 reason = "this device cannot read GPU buffers back asynchronously";
-            else if (hasColliders)
-                reason = "colliders are not yet simulated on the GPU";
+            else if (maxWorkGroupSize < FluidComputeLayout.ThreadGroupSize)
+                reason = $"this device allows {maxWorkGroupSize} threads per group, the fluid kernels use {FluidComputeLayout.ThreadGroupSize}";
             return reason == null;
         }
     }

@@ -8,11 +8,15 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public struct FluidComputeConstants
     {
-        public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing;
-        public int4 GridDims, Flags;
+        public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Colliding;
+        /// <summary>x colliders, y drains in <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeStep.PackShapes"/>).</summary>
+        public int4 GridDims, Flags, ShapeCounts;
 
-        /// <summary>The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds.</summary>
-        public static FluidComputeConstants Of(in FluidConstants c, float h, float dt)
+        /// <summary>
+        /// The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds, with
+        /// <paramref name="colliders"/> colliders and <paramref name="drains"/> drains packed in the shape buffer.
+        /// </summary>
+        public static FluidComputeConstants Of(in FluidConstants c, float h, float dt, int colliders = 0, int drains = 0)
         {
             FluidParameters p = c.Parameters;
             SphKernels k = c.Kernels;
@@ -35,6 +39,8 @@ namespace SoftBodyDynamics.Solvers
                 Smoothing = new float4(h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient,
                     1f - math.exp(-p.AlignmentRate * h), dt, 0f),
                 Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
+                ShapeCounts = new int4(colliders, drains, 0, 0),
+                Colliding = new float4(p.WallFriction, 0f, 0f, 0f),
             };
         }
 
@@ -53,6 +59,8 @@ namespace SoftBodyDynamics.Solvers
             commands.SetVector(FluidComputeGlobal.Cohesion, Cohesion);
             commands.SetVector(FluidComputeGlobal.Smoothing, Smoothing);
             commands.SetInts(FluidComputeGlobal.Flags, Flags);
+            commands.SetInts(FluidComputeGlobal.ShapeCounts, ShapeCounts);
+            commands.SetVector(FluidComputeGlobal.Colliding, Colliding);
         }
     }
 }

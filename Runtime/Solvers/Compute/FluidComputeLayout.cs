@@ -23,7 +23,11 @@ namespace SoftBodyDynamics.Solvers
 
         // _Stats slots (STAT_* in FluidCommon.hlsl).
         public const int StatLive = 0, StatKilled = 1, StatExpired = 2, StatInvalid = 3, StatSpeedClamped = 4, StatOverCompressed = 5,
-            StatNeighbourOverflow = 6, StatMaxDensityRatio = 7, StatMaxSpeedSquared = 8, StatCount = 9;
+            StatNeighbourOverflow = 6, StatMaxDensityRatio = 7, StatMaxSpeedSquared = 8, StatContacts = 9,
+            StatTotalKilled = 10, StatTotalExpired = 11, StatTotalInvalid = 12, StatCount = 13;
+
+        /// <summary>float4s per collider or drain in <see cref="FluidComputeBuffer.Shapes"/> (SHAPE_FLOAT4S in FluidColliders.hlsl).</summary>
+        public const int ShapeFloat4s = 5;
 
         /// <summary>Bytes per element of a buffer.</summary>
         public static int Stride(FluidComputeBuffer buffer)
@@ -32,7 +36,7 @@ namespace SoftBodyDynamics.Solvers
             {
                 case FluidComputeBuffer.Positions: case FluidComputeBuffer.Velocities: case FluidComputeBuffer.Previous:
                 case FluidComputeBuffer.PositionsOut: case FluidComputeBuffer.VelocitiesOut: case FluidComputeBuffer.PreviousOut:
-                case FluidComputeBuffer.VectorsA: case FluidComputeBuffer.VectorsB:
+                case FluidComputeBuffer.VectorsA: case FluidComputeBuffer.VectorsB: case FluidComputeBuffer.Shapes:
                     return 16;
                 case FluidComputeBuffer.Extras: case FluidComputeBuffer.ExtrasOut:
                     return 8;
@@ -41,8 +45,8 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
-        /// <summary>Elements of a buffer for <paramref name="capacity"/> particles on a grid of <paramref name="cells"/> cells.</summary>
-        public static int Length(FluidComputeBuffer buffer, int capacity, int cells)
+        /// <summary>Elements of a buffer for <paramref name="capacity"/> particles on a grid of <paramref name="cells"/> cells with <paramref name="shapes"/> colliders and drains.</summary>
+        public static int Length(FluidComputeBuffer buffer, int capacity, int cells, int shapes)
         {
             capacity = math.max(capacity, 1);
             switch (buffer)
@@ -52,6 +56,7 @@ namespace SoftBodyDynamics.Solvers
                 case FluidComputeBuffer.Neighbours: return capacity * FluidScratch.MaxNeighbours;
                 case FluidComputeBuffer.Stats: return StatCount;
                 case FluidComputeBuffer.Args: return 3;
+                case FluidComputeBuffer.Shapes: return ShapeFloat4s * math.max(shapes, 1);
                 default: return capacity;
             }
         }

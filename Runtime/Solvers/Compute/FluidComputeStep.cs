@@ -33,8 +33,20 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
+        /// Marks the live particles inside a drain (<see cref="FluidDrain.Apply"/>): the next sort removes them. The drains
+        /// are the shapes after the colliders in <see cref="FluidComputeBuffer.Shapes"/> (the constants' ShapeCounts).
+        /// </summary>
+        public static void RecordDrain<T>(ref T commands, in FluidComputeConstants constants) where T : IFluidComputeCommands
+        {
+            if (constants.ShapeCounts.y <= 0)
+                return;
+            constants.Set(ref commands);
+            commands.DispatchIndirect(FluidKernel.Drain);
+        }
+
+        /// <summary>
         /// Records <paramref name="substeps"/> substeps of the passes <paramref name="passes"/> (from
-        /// <see cref="FluidSubstepPasses.Write"/>, without colliders) with the constants of the substep length.
+        /// <see cref="FluidSubstepPasses.Write"/>) with the constants of the substep length.
         /// </summary>
         public static void RecordSubsteps<T>(ref T commands, in FluidConstants c, in FluidComputeConstants constants, int substeps,
             ReadOnlySpan<FluidPass> passes) where T : IFluidComputeCommands
@@ -52,7 +64,6 @@ namespace SoftBodyDynamics.Solvers
             {
                 case FluidPass.Sort: RecordSort(ref commands, c.Grid.CellCount, false); return;
                 case FluidPass.SortWithPrevious: RecordSort(ref commands, c.Grid.CellCount, true); return;
-                case FluidPass.Collide: throw new NotSupportedException("Colliders are not yet simulated on the GPU.");
             }
             commands.DispatchIndirect(KernelOf(pass));
         }
@@ -79,6 +90,7 @@ namespace SoftBodyDynamics.Solvers
                 case FluidPass.Correction: return FluidKernel.Correction;
                 case FluidPass.ApplyCorrection: return FluidKernel.ApplyCorrection;
                 case FluidPass.VelocityFromPositions: return FluidKernel.VelocityFromPositions;
+                case FluidPass.Collide: return FluidKernel.Collide;
                 default: throw new ArgumentOutOfRangeException(nameof(pass), pass, "not a range pass");
             }
         }
@@ -139,6 +151,30 @@ namespace SoftBodyDynamics.Solvers
                 velocities[i] = new float4(p.Velocities[i], p.Lifetimes[i]);
                 extras[i] = new FluidComputeExtras { Attribute = p.Attributes[i], Id = p.Ids[i] };
             }
+        }
+
+        /// <summary>
+        /// Packs colliders then drains into the shape buffer layout (<see cref="FluidComputeLayout.ShapeFloat4s"/> float4s
+        /// each: type bits and radius, centre, axis, rotation, half extents). Returns the float4s written.
+        /// </summary>
+        public static int PackShapes(ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<FluidDrain> drains, Span<float4> destination)
+        {
+            int n = 0;
+            for (int i = 0; i < colliders.Length; i++)
+                n = PackShape(colliders[i], destination, n);
+            for (int i = 0; i < drains.Length; i++)
+                n = PackShape(drains[i].Shape, destination, n);
+            return n;
+        }
+
+        static int PackShape(in ColliderShape s, Span<float4> destination, int n)
+        {
+            destination[n++] = new float4(math.asfloat((uint)s.Type), s.Radius, 0f, 0f);
+            destination[n++] = new float4(s.Center, 0f);
+            destination[n++] = new float4(s.Axis, 0f);
+            destination[n++] = s.Rotation.value;
+            destination[n++] = new float4(s.HalfExtents, 0f);
+            return n;
         }
 
         /// <summary>The inverse of <see cref="Pack"/>.</summary>

@@ -10,19 +10,19 @@ namespace SoftBodyDynamics.Solvers
         CommitSort, Permute, PermuteWithPrevious, PermuteCopyBack, PermuteCopyBackWithPrevious, Emit, CommitEmit,
         Density, DensityFromNeighbours, SurfaceNormals, Forces, CohesionForces, CopyAToVelocities, CopyBToVelocities,
         CopyVelocitiesToA, ViscosityAToB, ViscosityBToA, Alignment, Advect, Predict, Lambda, Correction, ApplyCorrection,
-        VelocityFromPositions,
+        VelocityFromPositions, Drain, Collide,
     }
 
     /// <summary>The structured buffers of the fluid kernels; the shader property is "_" + the name.</summary>
     public enum FluidComputeBuffer : byte
     {
         Positions, Velocities, Extras, Previous, PositionsOut, VelocitiesOut, ExtrasOut, PreviousOut,
-        Keys, Ranks, CellStart, ScanSums, Order, Densities, Pressures, Neighbours, NeighbourCounts, VectorsA, VectorsB, Stats, Args,
+        Keys, Ranks, CellStart, ScanSums, Order, Densities, Pressures, Neighbours, NeighbourCounts, VectorsA, VectorsB, Stats, Args, Shapes,
     }
 
     /// <summary>The constants of the fluid kernels (float4 or int4 globals); the shader property is "_" + the name.</summary>
     public enum FluidComputeGlobal : byte
     {
-        GridOrigin, GridDims, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Flags, Counts, Scan,
+        GridOrigin, GridDims, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Flags, Counts, Scan, ShapeCounts, Colliding,
     }
 }

@@ -42,6 +42,11 @@ namespace SoftBodyDynamics.Tests.Compute
                     p.Cohesion = FluidCohesionModel.Akinci;
                     p.SurfaceTension = 0.1f;
                     break;
+                case "WCSPH colliders":
+                case "PBF colliders":
+                    p.Solver = setting.StartsWith("PBF") ? FluidSolverKind.PositionBased : FluidSolverKind.WeaklyCompressible;
+                    p.WallFriction = 0.3f;
+                    break;
                 case "PBF Akinci viscosity":
                     p.Solver = FluidSolverKind.PositionBased;
                     p.PressureIterations = 3;
@@ -73,19 +78,23 @@ namespace SoftBodyDynamics.Tests.Compute
         [TestCase("WCSPH viscosity flocking")]
         [TestCase("WCSPH Akinci")]
         [TestCase("PBF Akinci viscosity")]
+        [TestCase("WCSPH colliders")]
+        [TestCase("PBF colliders")]
         public void EveryPass_MatchesItsCpuPassWithinRoundOff(string setting)
         {
             var c = new FluidConstants(Scene(setting));
+            ColliderShape[] colliders = setting.Contains("colliders") ? Colliders() : Array.Empty<ColliderShape>();
             int cells = c.Grid.CellCount;
             FluidBuffers cpu = Block(c, 1024);
             int capacity = cpu.Capacity;
             const float dt = 1f / 120f;
             FluidSolver.Plan plan = FluidSolver.Begin(c, dt, cpu.Particles, ref cpu.Status);
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(c.Parameters, false, passes);
+            int passCount = FluidSubstepPasses.Write(c.Parameters, colliders.Length > 0, passes);
             using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, capacity);
+            g.SetShapes(colliders, ReadOnlySpan<FluidDrain>.Empty);
             var gpu = g;
-            var constants = FluidComputeConstants.Of(c, plan.H, dt);
+            var constants = g.ConstantsOf(plan.H, dt);
             int count = cpu.Status.Count;
             var report = new System.Text.StringBuilder();
             // Two substeps, so the second sees neighbour lists, densities and velocities the first produced.
@@ -99,7 +108,7 @@ namespace SoftBodyDynamics.Tests.Compute
                 g.Flush();
                 Lavapipe.AssertValid();
                 var counters = new FluidPassCounters();
-                FluidPasses.Run(pass, c, ReadOnlySpan<ColliderShape>.Empty, cpu.Particles, cpu.Scratch, 0, 1, ref count, plan.H, ref counters);
+                FluidPasses.Run(pass, c, colliders, cpu.Particles, cpu.Scratch, 0, 1, ref count, plan.H, ref counters);
                 FluidBuffers back = GpuState.Download(g, c, capacity, cells);
                 Assert.That(back.Status.Count, Is.EqualTo(count), $"{pass}: live count");
                 string where = $"{setting}, substep {substep}, {pass}";
@@ -122,9 +131,43 @@ namespace SoftBodyDynamics.Tests.Compute
                     Assert.That(back.Neighbours.AsSpan(i * FluidScratch.MaxNeighbours, cpu.NeighbourCounts[i]).ToArray(),
                         Is.EqualTo(cpu.Neighbours.AsSpan(i * FluidScratch.MaxNeighbours, cpu.NeighbourCounts[i]).ToArray()), where + $": neighbours of {i}");
                 FluidPassCounters gc = g.Counters();
-                Assert.That((gc.SpeedClamped, gc.OverCompressed, gc.NeighbourOverflow), Is.EqualTo((counters.SpeedClamped, counters.OverCompressed, counters.NeighbourOverflow)), where + ": counters");
+                Assert.That((gc.SpeedClamped, gc.OverCompressed, gc.NeighbourOverflow, gc.Contacts),
+                    Is.EqualTo((counters.SpeedClamped, counters.OverCompressed, counters.NeighbourOverflow, counters.Contacts)), where + ": counters");
             }
             TestContext.Out.WriteLine(report.ToString());
+        }
+
+        /// <summary>One collider of each kind inside and around the block: the walls' density and push, and the contacts.</summary>
+        static ColliderShape[] Colliders() => new[]
+        {
+            ColliderShape.Sphere(new float3(0.1f, 0.08f, 0.08f), 0.04f),
+            ColliderShape.Box(new float3(0.2f, 0.02f, 0.08f), quaternion.AxisAngle(math.normalize(new float3(0.3f, 0.5f, 0.2f)), 0.6f), new float3(0.05f, 0.03f, 0.04f)),
+            ColliderShape.Capsule(new float3(0.03f, 0.18f, 0.02f), new float3(0.15f, 0.2f, 0.14f), 0.02f),
+            ColliderShape.Plane(new float3(0f, 0.03f, 0f), math.normalize(new float3(0.2f, 1f, 0.1f))),
+        };
+
+        [Test]
+        public void Drain_MarksTheParticlesTheCpuDrainMarks()
+        {
+            var c = new FluidConstants(Scene("WCSPH"));
+            FluidBuffers cpu = Block(c, 1024);
+            int count = cpu.Status.Count;
+            cpu.Lifetimes[5] = -1f;
+            var drains = new[]
+            {
+                new FluidDrain { Shape = ColliderShape.Sphere(new float3(0.1f, 0.1f, 0.08f), 0.05f) },
+                new FluidDrain { Shape = ColliderShape.Box(new float3(0.18f, 0.2f, 0.08f), quaternion.AxisAngle(math.normalize(new float3(0.4f, 0.1f, 0.7f)), 0.8f), new float3(0.03f, 0.05f, 0.02f)) },
+                new FluidDrain { Shape = ColliderShape.Plane(new float3(0f, 0.02f, 0f), new float3(0f, -1f, 0f)) },
+            };
+            using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, cpu.Capacity);
+            g.Upload(cpu.Particles, count);
+            g.SetShapes(ReadOnlySpan<ColliderShape>.Empty, drains);
+            g.Drain();
+            Lavapipe.AssertValid();
+            int marked = FluidDrain.Apply(drains, cpu.Particles, count);
+            FluidBuffers back = GpuState.Download(g, c, cpu.Capacity, c.Grid.CellCount);
+            Assert.That(marked, Is.GreaterThan(50), "the drains cover part of the block");
+            Assert.That(back.Lifetimes.AsSpan(0, count).ToArray(), Is.EqualTo(cpu.Lifetimes.AsSpan(0, count).ToArray()));
         }
 
         static void AssertClose((double Difference, double Scale) r, string what, System.Text.StringBuilder report)

@@ -14,6 +14,8 @@ namespace Unity.Rendering
         // a render pipeline asset, a graphics device that is not Null, compute shaders; OnCreate returns early and sets
         // Enabled = false when it is false, leaving no BatchRendererGroup)
         public static bool EntitiesGraphicsEnabled => throw null;
+        // (source: EntitiesGraphicsSystem.cs, 1.4.21: protected override void OnUpdate())
+        protected override void OnUpdate() => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities.graphics@1.4/api/Unity.Rendering.EntitiesGraphicsSystem.RegisterMesh.html
         public BatchMeshID RegisterMesh(Mesh mesh) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities.graphics@1.4/api/Unity.Rendering.EntitiesGraphicsSystem.UnregisterMesh.html

@@ -9,16 +9,32 @@ namespace Unity.Entities
     {
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.Enabled.html
         public bool Enabled { get => throw null; set => throw null; }
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.EntityManager.html
+        public EntityManager EntityManager => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.RequireForUpdate.html
+        // (source: ComponentSystemBase.cs, 1.4.2: public void RequireForUpdate<T>())
+        public void RequireForUpdate<T>() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.OnCreate.html
+        protected virtual void OnCreate() { }
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.OnDestroy.html
+        protected virtual void OnDestroy() { }
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemBase.html
     public abstract partial class SystemBase : ComponentSystemBase
     {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemBase.OnUpdate.html
+        protected abstract void OnUpdate();
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemBase.CompleteDependency.html
+        // (source: SystemBase.cs, 1.4.2: protected void CompleteDependency())
+        protected void CompleteDependency() => throw null;
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemGroup.html
     public abstract partial class ComponentSystemGroup : SystemBase
     {
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemGroup.OnUpdate.html
+        protected override void OnUpdate() => throw null;
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.FixedStepSimulationSystemGroup.html

@@ -43,6 +43,9 @@ namespace Unity.Collections
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.AsReadOnlySpan.html
         public readonly ReadOnlySpan<T> AsReadOnlySpan() => throw null;
 
+        // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.GetSubArray.html
+        public NativeArray<T> GetSubArray(int start, int length) => throw null;
+
         // https://docs.unity3d.com/ScriptReference/Unity.Collections.NativeArray_1.Reinterpret.html
         public NativeArray<U> Reinterpret<U>() where U : struct => throw null;
 

@@ -1,0 +1,212 @@
+using System.Collections.Generic;
+using SoftBodyDynamics.Compute;
+using SoftBodyDynamics.Solvers;
+using Unity.Collections;
+using Unity.Entities;
+using Unity.Mathematics;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace SoftBodyDynamics
+{
+    /// <summary>
+    /// Runs on the GPU the packed fluids whose <see cref="FluidSettings.Backend"/> asks for it and whose device allows it
+    /// (<see cref="FluidBackendChoice"/>; the reason for a fallback is logged once per fluid, and such a fluid stays with
+    /// <see cref="FluidSimulationSystem"/>). A fluid it takes gets <see cref="FluidOnGpu"/>, a <see cref="FluidComputeSolver"/>
+    /// holding its particles (uploaded once from the entity buffers), and each fixed step: its colliders and drains, the
+    /// taps' spawns (placed by the CPU emitter from the tap schedule, then appended on the GPU), the step's dispatches.
+    /// The live count and removal totals come back asynchronously; the particles come back into the entity buffers as
+    /// <see cref="FluidSettings.Readback"/> says, never stalling the frame. Runs only while a fluid has a compute shader.
+    /// </summary>
+    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateBefore(typeof(FluidSimulationSystem))]
+    public partial class FluidComputeSystem : SystemBase
+    {
+        sealed class Run
+        {
+            public FluidComputeSolver Solver;
+            public FluidComputeSpawns Spawns;
+            public FluidConstants Constants;
+            public FluidStatus Base;
+            public int Frame;
+            public AsyncGPUReadbackRequest Positions, Velocities, Extras;
+            public bool ParticlesPending;
+        }
+
+        readonly Dictionary<Entity, Run> m_Runs = new Dictionary<Entity, Run>();
+        readonly HashSet<Entity> m_Declined = new HashSet<Entity>();
+        EntityQuery m_Fluids, m_Colliders, m_Taps, m_Drains;
+
+        protected override void OnCreate()
+        {
+            RequireForUpdate<FluidComputeShader>();
+            m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime, FluidComputeShader>().Build();
+            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            m_Taps = SystemAPI.QueryBuilder().WithAll<FluidTap>().Build();
+            m_Drains = SystemAPI.QueryBuilder().WithAll<FluidDrainVolume>().Build();
+        }
+
+        protected override void OnUpdate()
+        {
+            CompleteDependency();
+            float dt = SystemAPI.Time.DeltaTime;
+            EntityManager m = EntityManager;
+            NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
+            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.Temp);
+            NativeArray<FluidTap> taps = m_Taps.ToComponentDataArray<FluidTap>(Allocator.Temp);
+            NativeArray<Entity> tapEntities = m_Taps.ToEntityArray(Allocator.Temp);
+            NativeArray<FluidDrainVolume> drains = m_Drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp);
+            ReleaseRemoved(m);
+            for (int f = 0; f < fluids.Length; f++)
+            {
+                Entity fluid = fluids[f];
+                FluidSettings settings = m.GetComponentData<FluidSettings>(fluid);
+                if (!m_Runs.TryGetValue(fluid, out Run run) && !TryTake(m, fluid, settings, out run))
+                    continue;
+                FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
+                StepOnGpu(m, fluid, settings, ref runtime, run, colliders, taps, tapEntities, drains, dt);
+                m.SetComponentData(fluid, runtime);
+            }
+            fluids.Dispose();
+            colliders.Dispose();
+            taps.Dispose();
+            tapEntities.Dispose();
+            drains.Dispose();
+        }
+
+        /// <summary>Takes a fluid onto the GPU when its settings and the device allow it; says once why not.</summary>
+        bool TryTake(EntityManager m, Entity fluid, in FluidSettings settings, out Run run)
+        {
+            run = null;
+            if (settings.Backend == FluidBackend.Cpu || m_Declined.Contains(fluid))
+                return false;
+            ComputeShader shader = m.GetComponentData<FluidComputeShader>(fluid).Shader.Value;
+            string reason;
+            if (settings.Storage != FluidStorage.Packed)
+                reason = "Entities storage runs on the CPU";
+            else if (shader == null)
+                reason = "no compute shader is assigned";
+            else
+                FluidBackendChoice.UseGpu(settings.Backend, SystemInfo.supportsComputeShaders, SystemInfo.supportsAsyncGPUReadback,
+                    SystemInfo.maxComputeWorkGroupSize, out reason);
+            if (reason != null)
+            {
+                m_Declined.Add(fluid);
+                string message = $"Fluid Entity({fluid.Index}:{fluid.Version}) runs on the CPU: {reason}.";
+                if (settings.Backend == FluidBackend.Gpu)
+                    Debug.LogWarning(message);
+                else
+                    Debug.Log(message);
+                return false;
+            }
+            FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
+            FluidEntityArrays a = FluidSimulationSystem.Arrays(m, fluid);
+            if (!FluidSystemFrame.Prepare(settings, ref runtime, a, out FluidConstants constants))
+                return false;
+            int budget = math.max(1, settings.Budget);
+            run = new Run
+            {
+                Solver = new FluidComputeSolver(shader, constants, budget),
+                Spawns = new FluidComputeSpawns(budget, constants.Grid.CellCount),
+                Constants = constants,
+                Base = runtime.Status,
+            };
+            int count = math.clamp(runtime.Status.Count, 0, a.Positions.Length);
+            var positions = new NativeArray<float4>(math.max(count, 1), Allocator.Temp);
+            var velocities = new NativeArray<float4>(math.max(count, 1), Allocator.Temp);
+            var extras = new NativeArray<FluidComputeExtras>(math.max(count, 1), Allocator.Temp);
+            FluidComputeStep.Pack(FluidSystemFrame.Particles(a), count, positions.AsSpan(), velocities.AsSpan(), extras.AsSpan());
+            run.Solver.Upload(positions, velocities, extras, count);
+            m.SetComponentData(fluid, runtime);
+            m.AddComponent<FluidOnGpu>(fluid);
+            m_Runs[fluid] = run;
+            return true;
+        }
+
+        /// <summary>Colliders and drains, the taps' spawns, the step, then the read-backs the settings ask for.</summary>
+        static void StepOnGpu(EntityManager m, Entity fluid, in FluidSettings settings, ref FluidRuntime runtime, Run run,
+            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<FluidDrainVolume> drainVolumes, float dt)
+        {
+            FluidComputeSolver solver = run.Solver;
+            var drains = new NativeArray<FluidDrain>(drainVolumes.Length, Allocator.Temp);
+            int drainCount = 0;
+            for (int d = 0; d < drainVolumes.Length; d++)
+                if (drainVolumes[d].Fluid == fluid)
+                    drains[drainCount++] = drainVolumes[d].Drain;
+            solver.SetShapes(colliders.Reinterpret<ColliderShape>(), drains.GetSubArray(0, drainCount));
+            FluidFrameReport frame = run.Spawns.Emit(m, fluid, run.Constants, ref runtime, solver, taps, tapEntities, math.max(1, settings.Budget), dt);
+            frame.Step.Substeps = solver.Step(dt);
+            runtime.LastFrame = frame;
+            ReadBack(m, fluid, settings, ref runtime, run);
+            drains.Dispose();
+        }
+
+        /// <summary>
+        /// Counters every step (when the last request has arrived); particles into the entity buffers every step or
+        /// every N steps. A request is polled on later steps, never waited for.
+        /// </summary>
+        static void ReadBack(EntityManager m, Entity fluid, in FluidSettings settings, ref FluidRuntime runtime, Run run)
+        {
+            FluidComputeSolver solver = run.Solver;
+            System.ReadOnlySpan<uint> stats = solver.LastStats;
+            runtime.Status.Count = (int)stats[FluidComputeLayout.StatLive];
+            runtime.Status.Killed = run.Base.Killed + (int)stats[FluidComputeLayout.StatTotalKilled];
+            runtime.Status.Expired = run.Base.Expired + (int)stats[FluidComputeLayout.StatTotalExpired];
+            runtime.Status.Invalid = run.Base.Invalid + (int)stats[FluidComputeLayout.StatTotalInvalid];
+            run.Frame++;
+            if (run.ParticlesPending)
+            {
+                if (!(run.Positions.done && run.Velocities.done && run.Extras.done))
+                    return;
+                run.ParticlesPending = false;
+                if (!run.Positions.hasError && !run.Velocities.hasError && !run.Extras.hasError)
+                    CopyParticles(m, fluid, run);
+            }
+            bool due = settings.Readback == FluidReadback.EveryFrame
+                || (settings.Readback == FluidReadback.EveryNFrames && run.Frame % math.max(1, settings.ReadbackInterval) == 0);
+            if (!due)
+                return;
+            run.Positions = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Positions));
+            run.Velocities = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Velocities));
+            run.Extras = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Extras));
+            run.ParticlesPending = true;
+        }
+
+        /// <summary>The read-back particles (the live count of the counters read back with them) into the fluid's buffers.</summary>
+        static void CopyParticles(EntityManager m, Entity fluid, Run run)
+        {
+            FluidEntityArrays a = FluidSimulationSystem.Arrays(m, fluid);
+            NativeArray<float4> positions = run.Positions.GetData<float4>();
+            NativeArray<float4> velocities = run.Velocities.GetData<float4>();
+            NativeArray<FluidComputeExtras> extras = run.Extras.GetData<FluidComputeExtras>();
+            int count = math.min(run.Solver.LastKnownCount, math.min(positions.Length, a.Positions.Length));
+            FluidComputeStep.Unpack(positions.AsReadOnlySpan(), velocities.AsReadOnlySpan(), extras.AsReadOnlySpan(), count, FluidSystemFrame.Particles(a));
+        }
+
+        /// <summary>Releases the GPU buffers of fluids that no longer exist.</summary>
+        void ReleaseRemoved(EntityManager m)
+        {
+            var gone = new List<Entity>();
+            foreach (var pair in m_Runs)
+                if (!m.Exists(pair.Key))
+                    gone.Add(pair.Key);
+            foreach (Entity e in gone)
+            {
+                m_Runs[e].Solver.Dispose();
+                m_Runs[e].Spawns.Dispose();
+                m_Runs.Remove(e);
+            }
+        }
+
+        protected override void OnDestroy()
+        {
+            foreach (var pair in m_Runs)
+            {
+                pair.Value.Solver.Dispose();
+                pair.Value.Spawns.Dispose();
+            }
+            m_Runs.Clear();
+        }
+    }
+}

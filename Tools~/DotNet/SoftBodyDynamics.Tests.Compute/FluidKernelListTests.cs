@@ -1,0 +1,56 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+using SoftBodyDynamics.Lavapipe;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Tests.Compute
+{
+    /// <summary>The compute file and the C# side agree on kernels and sizes, and the kernels keep the portable rules.</summary>
+    public class FluidKernelListTests
+    {
+        [Test]
+        public void Pragmas_AreTheKernelEnumInOrder()
+        {
+            var pragmas = KernelCompiler.Kernels(LavapipeFluidSolver.ComputePath()).Select(k => k.Name).ToArray();
+            Assert.That(pragmas, Is.EqualTo(Enum.GetNames(typeof(FluidKernel))));
+        }
+
+        [Test]
+        public void ThreadGroups_AreAtMost256AndParticleKernelsUseTheLayoutSize()
+        {
+            LavapipeComputeShader shader = Lavapipe.FluidShader;
+            for (int k = 0; k < shader.KernelCount; k++)
+            {
+                var size = shader.ThreadGroupSize(k);
+                string name = shader.KernelName(k);
+                Assert.That(size.x * size.y * size.z, Is.LessThanOrEqualTo(256), name);
+                bool single = name.StartsWith("Commit") || name == "ClearStats";
+                if (!single)
+                    Assert.That(size.x, Is.EqualTo(FluidComputeLayout.ThreadGroupSize), name);
+            }
+        }
+
+        [Test]
+        public void Sources_KeepThePortableRules()
+        {
+            string dir = Path.GetDirectoryName(LavapipeFluidSolver.ComputePath());
+            foreach (string file in Directory.GetFiles(dir, "*.hlsl", SearchOption.AllDirectories).Append(LavapipeFluidSolver.ComputePath()))
+            {
+                string text = Regex.Replace(File.ReadAllText(file), @"//[^\n]*", "");
+                string name = Path.GetFileName(file);
+                Assert.That(Regex.IsMatch(text, @"StructuredBuffer\s*<\s*(float|int|uint|half)3\s*>"), Is.False, name + ": a 3-vector in a structured buffer");
+                Assert.That(Regex.IsMatch(text, @"\bWave[A-Z]\w*\s*\("), Is.False, name + ": a wave intrinsic");
+                Assert.That(Regex.IsMatch(text, @"\b(u?int64_t|double)\b"), Is.False, name + ": a 64-bit type");
+                // groupshared: the scan's 512 uints (2 KB), far under OpenGL ES 3.1's 16 KB.
+                foreach (Match m in Regex.Matches(text, @"groupshared\s+(\w+)\s+\w+\s*\[\s*(\w+)\s*\]"))
+                {
+                    int elements = m.Groups[2].Value == "SCAN_BLOCK" ? 512 : int.Parse(m.Groups[2].Value);
+                    Assert.That(elements * 4, Is.LessThanOrEqualTo(16 * 1024), name + ": groupshared over 16 KB");
+                }
+            }
+        }
+    }
+}
