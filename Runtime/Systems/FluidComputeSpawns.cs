@@ -8,10 +8,8 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// A GPU fluid's tap spawns: the CPU emitter places them (schedule, lattice, jitter, budget) into a staging area of
-    /// its own, with the fluid's ids, and the GPU appends them (<see cref="FluidComputeSolver.Emit"/>). The emitter's
-    /// spacing check sees only the particles of the same call, not the fluid's, whose positions stay on the GPU; there is
-    /// no prewarm on the GPU path.
+    /// A GPU fluid's tap spawns (<see cref="FluidComputeEmission.Stage"/>) in a staging area of its own, appended on the
+    /// GPU (<see cref="FluidComputeSolver.Emit"/>). There is no prewarm on the GPU path.
     /// </summary>
     sealed class FluidComputeSpawns : IDisposable
     {
@@ -49,23 +47,16 @@ namespace SoftBodyDynamics
             NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities, int budget, float dt)
         {
             FluidEntityArrays a = FluidSimulationSystem.Arrays(m, fluid);
-            var particles = new FluidParticles(m_Positions.AsSpan(), m_Velocities.AsSpan(), m_Ages.AsSpan(), m_Lifetimes.AsSpan(),
+            var staging = new FluidParticles(m_Positions.AsSpan(), m_Velocities.AsSpan(), m_Ages.AsSpan(), m_Lifetimes.AsSpan(),
                 m_Attributes.AsSpan(), m_Ids.AsSpan());
             FluidScratch scratch = FluidScratch.FromFlat(m_ScratchInts.AsSpan(), m_ScratchFloats.AsSpan(), m_ScratchVectors.AsSpan(), m_Capacity, m_Cells);
-            var staged = new FluidStatus { NextId = runtime.Status.NextId };
-            bool prewarmed = true;
-            int room = math.clamp(budget - solver.LastKnownCount, 0, m_Capacity);
-            var noColliders = new NativeArray<SoftBodyCollider>(0, Allocator.Temp);
-            var noDrains = new NativeArray<FluidDrainVolume>(0, Allocator.Temp);
-            FluidFrameReport report = FluidSystemFrame.DrainAndEmit(fluid, constants, ref staged, ref prewarmed, a.Taps, particles, scratch,
-                math.max(room, 1), noColliders, taps, tapEntities, noDrains, dt);
-            int spawned = room > 0 ? staged.Count : 0;
-            runtime.Status.NextId = staged.NextId;
-            runtime.Status.Spawned += spawned;
-            FluidComputeStep.Pack(particles, spawned, m_PackedPositions.AsSpan(), m_PackedVelocities.AsSpan(), m_PackedExtras.AsSpan());
+            var tapSet = FluidTapSet.Collect(fluid, a.Taps, taps, tapEntities);
+            FluidFrameReport report = FluidComputeEmission.Stage(constants, tapSet.Instances, tapSet.Bursts, budget - solver.LastKnownCount, dt,
+                staging, scratch, ref runtime.Status, out int spawned);
+            tapSet.Store(a.Taps);
+            tapSet.Dispose();
+            FluidComputeStep.Pack(staging, spawned, m_PackedPositions.AsSpan(), m_PackedVelocities.AsSpan(), m_PackedExtras.AsSpan());
             solver.Emit(m_PackedPositions, m_PackedVelocities, m_PackedExtras, spawned);
-            noColliders.Dispose();
-            noDrains.Dispose();
             return report;
         }
 

@@ -21,6 +21,62 @@ namespace SoftBodyDynamics
         public DynamicBuffer<FluidTapRuntime> Taps;
     }
 
+    /// <summary>One fluid's taps for a frame: their settings, bursts and states (from the fluid's tap buffer), written back by <see cref="Store"/>.</summary>
+    struct FluidTapSet : System.IDisposable
+    {
+        NativeArray<FluidTapInstance> m_Instances;
+        NativeArray<FluidTapBurst> m_Bursts;
+        NativeArray<int> m_Owners;
+        int m_TapCount, m_BurstCount;
+
+        public System.Span<FluidTapInstance> Instances => m_Instances.AsSpan().Slice(0, m_TapCount);
+        public System.ReadOnlySpan<FluidTapBurst> Bursts => m_Bursts.AsReadOnlySpan().Slice(0, m_BurstCount);
+
+        /// <summary>The taps of <paramref name="entity"/> among <paramref name="taps"/>, with their states from <paramref name="tapStates"/>.</summary>
+        public static FluidTapSet Collect(Entity entity, DynamicBuffer<FluidTapRuntime> tapStates, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities)
+        {
+            var set = new FluidTapSet
+            {
+                m_Instances = new NativeArray<FluidTapInstance>(taps.Length, Allocator.Temp),
+                m_Bursts = new NativeArray<FluidTapBurst>(taps.Length * FluidTap.MaxBursts, Allocator.Temp),
+                m_Owners = new NativeArray<int>(taps.Length, Allocator.Temp),
+            };
+            for (int t = 0; t < taps.Length; t++)
+            {
+                if (taps[t].Fluid != entity)
+                    continue;
+                FluidTap tap = taps[t];
+                int slot = FluidEntityBuffers.TapSlot(tapStates, tapEntities[t]);
+                int count = math.clamp(tap.BurstCount, 0, FluidTap.MaxBursts);
+                for (int b = 0; b < count; b++)
+                    set.m_Bursts[set.m_BurstCount + b] = tap.Burst(b);
+                set.m_Instances[set.m_TapCount] = new FluidTapInstance
+                    { Settings = tap.Settings, State = tapStates[slot].State, BurstStart = set.m_BurstCount, BurstCount = count };
+                set.m_Owners[set.m_TapCount++] = slot;
+                set.m_BurstCount += count;
+            }
+            return set;
+        }
+
+        /// <summary>Writes the taps' advanced states back to the fluid's tap buffer.</summary>
+        public void Store(DynamicBuffer<FluidTapRuntime> tapStates)
+        {
+            for (int t = 0; t < m_TapCount; t++)
+            {
+                FluidTapRuntime r = tapStates[m_Owners[t]];
+                r.State = m_Instances[t].State;
+                tapStates[m_Owners[t]] = r;
+            }
+        }
+
+        public void Dispose()
+        {
+            m_Instances.Dispose();
+            m_Bursts.Dispose();
+            m_Owners.Dispose();
+        }
+    }
+
     /// <summary>
     /// One fluid's frame on ECS data, shared by the packed-storage job chain and the entity-storage path: sizes the
     /// buffers on first use, runs this fluid's drains and taps (prewarm once), then the solver step (single-threaded for
@@ -55,62 +111,25 @@ namespace SoftBodyDynamics
             NativeArray<FluidDrainVolume> drainVolumes, float dt)
         {
             int budget = math.max(1, settings.Budget);
+            FluidParticles particles = Particles(a);
             FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
-            return DrainAndEmit(entity, constants, ref runtime.Status, ref runtime.Prewarmed, a.Taps, Particles(a), scratch, budget, colliders, taps,
-                tapEntities, drainVolumes, dt);
-        }
-
-        /// <summary>
-        /// The same on given particle arrays and tap states (the GPU path spawns into a staging area with its own status):
-        /// <paramref name="prewarmed"/> false runs the taps' prewarm first and sets it.
-        /// </summary>
-        public static FluidFrameReport DrainAndEmit(Entity entity, in FluidConstants constants, ref FluidStatus status, ref bool prewarmed,
-            DynamicBuffer<FluidTapRuntime> tapStates, FluidParticles particles, FluidScratch scratch, int budget,
-            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
-            NativeArray<FluidDrainVolume> drainVolumes, float dt)
-        {
-            var instances = new NativeArray<FluidTapInstance>(taps.Length, Allocator.Temp);
-            var bursts = new NativeArray<FluidTapBurst>(taps.Length * FluidTap.MaxBursts, Allocator.Temp);
-            var owners = new NativeArray<int>(taps.Length, Allocator.Temp);
-            int tapCount = 0, burstCount = 0;
-            for (int t = 0; t < taps.Length; t++)
-            {
-                if (taps[t].Fluid != entity)
-                    continue;
-                FluidTap tap = taps[t];
-                int slot = FluidEntityBuffers.TapSlot(tapStates, tapEntities[t]);
-                int count = math.clamp(tap.BurstCount, 0, FluidTap.MaxBursts);
-                for (int b = 0; b < count; b++)
-                    bursts[burstCount + b] = tap.Burst(b);
-                instances[tapCount] = new FluidTapInstance { Settings = tap.Settings, State = tapStates[slot].State, BurstStart = burstCount, BurstCount = count };
-                owners[tapCount++] = slot;
-                burstCount += count;
-            }
+            var tapSet = FluidTapSet.Collect(entity, a.Taps, taps, tapEntities);
             var drains = new NativeArray<FluidDrain>(drainVolumes.Length, Allocator.Temp);
             int drainCount = 0;
             for (int d = 0; d < drainVolumes.Length; d++)
                 if (drainVolumes[d].Fluid == entity)
                     drains[drainCount++] = drainVolumes[d].Drain;
-
-            var tapSpan = instances.AsSpan().Slice(0, tapCount);
-            var burstSpan = bursts.AsReadOnlySpan().Slice(0, burstCount);
             var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
-            if (!prewarmed)
+            if (!runtime.Prewarmed)
             {
-                FluidFrame.Prewarm(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), drainSpan, tapSpan, burstSpan, budget, dt,
-                    particles, scratch, ref status);
-                prewarmed = true;
+                FluidFrame.Prewarm(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), drainSpan, tapSet.Instances, tapSet.Bursts,
+                    budget, dt, particles, scratch, ref runtime.Status);
+                runtime.Prewarmed = true;
             }
-            FluidFrameReport report = FluidFrame.DrainAndEmit(constants, drainSpan, tapSpan, burstSpan, budget, dt, particles, scratch, ref status);
-            for (int t = 0; t < tapCount; t++)
-            {
-                FluidTapRuntime r = tapStates[owners[t]];
-                r.State = instances[t].State;
-                tapStates[owners[t]] = r;
-            }
-            instances.Dispose();
-            bursts.Dispose();
-            owners.Dispose();
+            FluidFrameReport report = FluidFrame.DrainAndEmit(constants, drainSpan, tapSet.Instances, tapSet.Bursts, budget, dt, particles, scratch,
+                ref runtime.Status);
+            tapSet.Store(a.Taps);
+            tapSet.Dispose();
             drains.Dispose();
             return report;
         }
