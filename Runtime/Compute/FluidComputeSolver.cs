@@ -28,7 +28,8 @@ namespace SoftBodyDynamics.Compute
         readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
         FluidConstants m_Constants;
         int m_Capacity, m_Colliders, m_Drains;
-        bool m_ReadbackPending, m_Disposed;
+        bool m_ReadbackPending;
+        AsyncGPUReadbackRequest m_Readback;
         float m_LastMaxSpeed;
 
         static int[] PropertyIds(string[] names)
@@ -171,23 +172,24 @@ namespace SoftBodyDynamics.Compute
             return substeps.y;
         }
 
+        /// <summary>Takes the counters of a completed read-back (polled, never waited for) and asks for the next one.</summary>
         void RequestStats()
         {
             if (m_ReadbackPending)
-                return;
+            {
+                if (!m_Readback.done)
+                    return;
+                m_ReadbackPending = false;
+                if (!m_Readback.hasError)
+                {
+                    NativeArray<uint> data = m_Readback.GetData<uint>();
+                    for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
+                        m_Stats[i] = data[i];
+                    m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
+                }
+            }
+            m_Readback = AsyncGPUReadback.Request(m_Buffers[(int)FluidComputeBuffer.Stats]);
             m_ReadbackPending = true;
-            AsyncGPUReadback.Request(m_Buffers[(int)FluidComputeBuffer.Stats], OnStats);
-        }
-
-        void OnStats(AsyncGPUReadbackRequest request)
-        {
-            m_ReadbackPending = false;
-            if (m_Disposed || request.hasError)
-                return;
-            NativeArray<uint> data = request.GetData<uint>();
-            for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
-                m_Stats[i] = data[i];
-            m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
         }
 
         public void SetVector(FluidComputeGlobal name, float4 value) =>
@@ -213,7 +215,6 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Releases every buffer.</summary>
         public void Dispose()
         {
-            m_Disposed = true;
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 m_Buffers[b]?.Release();

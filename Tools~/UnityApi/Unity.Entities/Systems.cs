@@ -14,6 +14,9 @@ namespace Unity.Entities
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.RequireForUpdate.html
         // (source: ComponentSystemBase.cs, 1.4.2: public void RequireForUpdate<T>())
         public void RequireForUpdate<T>() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.Update.html
+        // (source: ComponentSystemBase.cs, 1.4.2: public abstract void Update(); SystemBase seals its override)
+        public void Update() => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.OnCreate.html
         protected virtual void OnCreate() { }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.OnDestroy.html
