@@ -13,3 +13,20 @@ bash "Tools~/setup.sh"
 export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
 dotnet build "Tools~/DotNet/SoftBodyDynamics.Runner/SoftBodyDynamics.Runner.csproj" -c Release --no-restore --verbosity quiet -nologo >/dev/null
 dotnet "Tools~/DotNet/SoftBodyDynamics.Runner/bin/Release/net10.0/SoftBodyDynamics.Runner.dll" "$@"
+
+# The GPU fluid kernels on lavapipe, pass by pass next to the C# passes (a CPU-driver timing, not a GPU one), appended
+# to the report; skipped when --filter or --method picks other suites.
+out="Reports~/latest"; quick=""; gpu=1
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --out) out="$2"; shift ;;
+    --quick) quick="--quick" ;;
+    --filter) case "${2,,}" in *lavapipe*|*gpu*) ;; *) gpu=0 ;; esac; shift ;;
+    --method) gpu=0; shift ;;
+  esac
+  shift
+done
+if [ "$gpu" -eq 1 ]; then
+  dotnet run -c Release --no-restore --project "Tools~/DotNet/SoftBodyDynamics.LavapipeTiming/SoftBodyDynamics.LavapipeTiming.csproj" -- $quick --out "$out/lavapipe.md"
+  { echo; echo "## GPU fluid kernels on lavapipe (CPU driver; not a GPU number)"; echo; cat "$out/lavapipe.md"; } >> "$out/report.md"
+fi
