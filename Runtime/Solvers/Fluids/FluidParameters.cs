@@ -113,18 +113,18 @@ namespace SoftBodyDynamics.Solvers
                 p.Solver = d.Solver;
             if ((uint)Cohesion > (uint)FluidCohesionModel.Akinci)
                 p.Cohesion = d.Cohesion;
-            p.ParticleSpacing = Positive(ParticleSpacing, d.ParticleSpacing);
+            p.ParticleSpacing = Finite.Positive(ParticleSpacing, d.ParticleSpacing);
             p.KernelRadiusRatio = math.isfinite(KernelRadiusRatio) ? math.clamp(KernelRadiusRatio, 1.5f, 4f) : d.KernelRadiusRatio;
-            p.RestDensity = Positive(RestDensity, d.RestDensity);
-            p.SpeedOfSound = Positive(SpeedOfSound, d.SpeedOfSound);
+            p.RestDensity = Finite.Positive(RestDensity, d.RestDensity);
+            p.SpeedOfSound = Finite.Positive(SpeedOfSound, d.SpeedOfSound);
             p.ArtificialViscosity = math.isfinite(ArtificialViscosity) ? math.clamp(ArtificialViscosity, 0f, 1f) : d.ArtificialViscosity;
             p.PressureIterations = math.clamp(PressureIterations, 1, MaxPressureIterations);
-            p.Viscosity = NonNegative(Viscosity);
+            p.Viscosity = Finite.NonNegative(Viscosity);
             p.ViscosityIterations = math.clamp(ViscosityIterations, 0, MaxViscosityIterations);
-            p.CohesionWeight = NonNegative(CohesionWeight);
-            p.SeparationWeight = NonNegative(SeparationWeight);
-            p.AlignmentRate = NonNegative(AlignmentRate);
-            p.SurfaceTension = NonNegative(SurfaceTension);
+            p.CohesionWeight = Finite.NonNegative(CohesionWeight);
+            p.SeparationWeight = Finite.NonNegative(SeparationWeight);
+            p.AlignmentRate = Finite.NonNegative(AlignmentRate);
+            p.SurfaceTension = Finite.NonNegative(SurfaceTension);
             p.Gravity = math.all(math.isfinite(Gravity)) ? Gravity : float3.zero;
             if (!math.all(math.isfinite(DomainMin)) || !math.all(math.isfinite(DomainMax)) || math.any(DomainMax - DomainMin < p.KernelRadius))
             {
@@ -134,12 +134,9 @@ namespace SoftBodyDynamics.Solvers
             p.WallFriction = math.isnan(WallFriction) ? 0f : math.saturate(WallFriction);
             p.CflNumber = math.isfinite(CflNumber) ? math.clamp(CflNumber, 0.05f, 1f) : d.CflNumber;
             p.MaxSubsteps = math.clamp(MaxSubsteps, 1, SubstepLimit);
-            p.MaxSpeed = Positive(MaxSpeed, d.MaxSpeed);
+            p.MaxSpeed = Finite.Positive(MaxSpeed, d.MaxSpeed);
             p.MaxDensityRatio = math.isfinite(MaxDensityRatio) && MaxDensityRatio > 1f ? MaxDensityRatio : d.MaxDensityRatio;
             return p;
         }
-
-        static float Positive(float v, float fallback) => v > 0f && math.isfinite(v) ? v : fallback;
-        static float NonNegative(float v) => math.isfinite(v) ? math.max(0f, v) : 0f;
     }
 }

@@ -219,98 +219,115 @@ namespace SoftBodyDynamics.Solvers
         public static void Forces(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
             Span<float3> destination, int start, int end, float h, bool pressureAndGravity)
         {
-            float alphaCh = 2f * c.Parameters.ArtificialViscosity * c.Parameters.SpeedOfSound * c.Kernels.H;
-            float eta2 = 0.01f * c.Kernels.H2;
-            float minDistance = 1e-6f * c.Kernels.H;
-            ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
-            ReadOnlySpan<float> pressures = s.Pressures, densities = s.Densities;
-            ReadOnlySpan<int> neighbours = s.Neighbours;
-            SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
-            float m = c.Mass, rho0 = prm.RestDensity;
             bool flocking = prm.Cohesion == FluidCohesionModel.Flocking && (prm.CohesionWeight > 0f || prm.SeparationWeight > 0f);
             bool akinci = prm.Cohesion == FluidCohesionModel.Akinci && prm.SurfaceTension > 0f;
-            float spacing = prm.ParticleSpacing;
-            const int cap = FluidScratch.MaxNeighbours;
             for (int i = start; i < end; i++)
             {
-                float3 xi = p.Positions[i];
                 float3 a = float3.zero;
-                int count = s.NeighbourCounts[i];
-                int list = i * cap;
                 if (pressureAndGravity)
-                {
-                    float pi = s.Pressures[i];
-                    float rhoi = s.Densities[i];
-                    float3 vi = velocities[i];
-                    float3 sum = float3.zero;
-                    ReadOnlySpan<int> list_ = neighbours.Slice(list, count);
-                    for (int n = 0; n < list_.Length; n++)
-                    {
-                        int j = list_[n];
-                        float3 rij = xi - x[j];
-                        float r2 = math.dot(rij, rij);
-                        float r = math.sqrt(r2);
-                        float scale = pi + pressures[j];
-                        // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
-                        float approach = math.min(math.dot(vi - velocities[j], rij), 0f);
-                        scale -= alphaCh * approach / ((rhoi + densities[j]) * (r2 + eta2));
-                        if (r > minDistance)
-                        {
-                            // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
-                            float hr = math.max(k.H - r, 0f);
-                            sum += (scale * hr * hr / r) * rij;
-                        }
-                        else
-                            // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
-                            sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
-                    }
-                    sum *= -m * k.SpikyGradientCoefficient * c.GradientCorrection;
-                    FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
-                    a += prm.Gravity + sum + rho0 * s.Pressures[i] * push;
-                }
+                    a += PressureAcceleration(c, colliders, p, s, i);
                 if (flocking)
-                {
-                    // Flocking: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.
-                    float3 centroid = float3.zero, separation = float3.zero;
-                    float weight = 0f;
-                    for (int n = 0; n < count; n++)
-                    {
-                        float3 xj = p.Positions[s.Neighbours[list + n]];
-                        float3 rij = xi - xj;
-                        float r2 = math.lengthsq(rij);
-                        float w = k.Poly6(r2);
-                        centroid += w * xj;
-                        weight += w;
-                        float r = math.sqrt(r2);
-                        if (r < spacing && r > 0f)
-                            separation += (spacing - r) / r * rij;
-                    }
-                    if (weight > 0f)
-                        a += prm.CohesionWeight * (centroid / weight - xi);
-                    a += prm.SeparationWeight * separation;
-                }
+                    AddFlocking(c, p, s, i, ref a);
                 if (akinci)
-                {
-                    // Akinci et al. 2013, eqs. 1–5: aᵢ = −γ·Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ).
-                    float3 ni = s.VectorsB[i];
-                    float rhoi = s.Densities[i];
-                    float3 sum = float3.zero;
-                    for (int n = 0; n < count; n++)
-                    {
-                        int j = s.Neighbours[list + n];
-                        float3 rij = xi - p.Positions[j];
-                        float r = math.length(rij);
-                        if (!(r < k.H))
-                            continue;
-                        float kij = 2f * rho0 / (rhoi + s.Densities[j]);
-                        float3 cohesion = r > 0f ? m * k.Cohesion(r) / r * rij : float3.zero;
-                        sum += kij * (cohesion + (ni - s.VectorsB[j]));
-                    }
-                    a -= prm.SurfaceTension * sum;
-                }
+                    a -= prm.SurfaceTension * AkinciSum(c, p, s, i);
                 destination[i] = p.Velocities[i] + h * a;
             }
+        }
+
+        /// <summary>
+        /// Weakly compressible part of <see cref="Forces"/> for slot <paramref name="i"/>: gravity, the symmetric pressure term
+        /// with artificial viscosity, and the walls' push.
+        /// </summary>
+        static float3 PressureAcceleration(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int i)
+        {
+            SphKernels k = c.Kernels;
+            FluidParameters prm = c.Parameters;
+            float alphaCh = 2f * prm.ArtificialViscosity * prm.SpeedOfSound * k.H;
+            float eta2 = 0.01f * k.H2;
+            float minDistance = 1e-6f * k.H;
+            ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
+            ReadOnlySpan<float> pressures = s.Pressures, densities = s.Densities;
+            float3 xi = x[i];
+            float pi = pressures[i];
+            float rhoi = densities[i];
+            float3 vi = velocities[i];
+            float3 sum = float3.zero;
+            ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
+            for (int n = 0; n < list.Length; n++)
+            {
+                int j = list[n];
+                float3 rij = xi - x[j];
+                float r2 = math.dot(rij, rij);
+                float r = math.sqrt(r2);
+                float scale = pi + pressures[j];
+                // Πᵢⱼ = −2αhc₀/(ρᵢ + ρⱼ) · vᵢⱼ·xᵢⱼ / (|xᵢⱼ|² + 0.01h²) for approaching pairs only.
+                float approach = math.min(math.dot(vi - velocities[j], rij), 0f);
+                scale -= alphaCh * approach / ((rhoi + densities[j]) * (r2 + eta2));
+                if (r > minDistance)
+                {
+                    // Spiky ∇W = −45/(πh⁶)(h − r)²·r̂; the coefficient and −m are applied after the loop.
+                    float hr = math.max(k.H - r, 0f);
+                    sum += (scale * hr * hr / r) * rij;
+                }
+                else
+                    // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
+                    sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
+            }
+            sum *= -c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
+            FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
+            return prm.Gravity + sum + prm.RestDensity * pi * push;
+        }
+
+        /// <summary>Flocking part of <see cref="Forces"/>: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.</summary>
+        static void AddFlocking(in FluidConstants c, FluidParticles p, FluidScratch s, int i, ref float3 a)
+        {
+            SphKernels k = c.Kernels;
+            FluidParameters prm = c.Parameters;
+            float spacing = prm.ParticleSpacing;
+            float3 xi = p.Positions[i];
+            float3 centroid = float3.zero, separation = float3.zero;
+            float weight = 0f;
+            ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
+            for (int n = 0; n < list.Length; n++)
+            {
+                float3 xj = p.Positions[list[n]];
+                float3 rij = xi - xj;
+                float r2 = math.lengthsq(rij);
+                float w = k.Poly6(r2);
+                centroid += w * xj;
+                weight += w;
+                float r = math.sqrt(r2);
+                if (r < spacing && r > 0f)
+                    separation += (spacing - r) / r * rij;
+            }
+            if (weight > 0f)
+                a += prm.CohesionWeight * (centroid / weight - xi);
+            a += prm.SeparationWeight * separation;
+        }
+
+        /// <summary>Akinci et al. 2013, eqs. 1–5: Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ); the acceleration is −γ times it.</summary>
+        static float3 AkinciSum(in FluidConstants c, FluidParticles p, FluidScratch s, int i)
+        {
+            SphKernels k = c.Kernels;
+            float m = c.Mass, rho0 = c.Parameters.RestDensity;
+            float3 xi = p.Positions[i];
+            float3 ni = s.VectorsB[i];
+            float rhoi = s.Densities[i];
+            float3 sum = float3.zero;
+            ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
+            for (int n = 0; n < list.Length; n++)
+            {
+                int j = list[n];
+                float3 rij = xi - p.Positions[j];
+                float r = math.length(rij);
+                if (!(r < k.H))
+                    continue;
+                float kij = 2f * rho0 / (rhoi + s.Densities[j]);
+                float3 cohesion = r > 0f ? m * k.Cohesion(r) / r * rij : float3.zero;
+                sum += kij * (cohesion + (ni - s.VectorsB[j]));
+            }
+            return sum;
         }
 
         /// <summary>A unit vector fixed by an unordered pair of ids, negated when the ids swap (so coincident pairs separate with zero net momentum).</summary>

@@ -121,27 +121,26 @@ namespace SoftBodyDynamics.Solvers
             s.Rotation = math.all(math.isfinite(q)) && math.dot(q, q) > 1e-12f ? math.normalize(Rotation) : quaternion.identity;
             if ((uint)Shape > (uint)FluidTapShape.Box)
                 s.Shape = d.Shape;
-            s.Radius = NonNegative(Radius);
-            s.HalfExtents = new float3(NonNegative(HalfExtents.x), NonNegative(HalfExtents.y), NonNegative(HalfExtents.z));
+            s.Radius = Finite.NonNegative(Radius);
+            s.HalfExtents = new float3(Finite.NonNegative(HalfExtents.x), Finite.NonNegative(HalfExtents.y), Finite.NonNegative(HalfExtents.z));
             s.ConeAngle = math.isfinite(ConeAngle) ? math.clamp(ConeAngle, 0f, 179f) : 0f;
-            s.Speed = NonNegative(Speed);
-            s.SpeedRandom = math.min(NonNegative(SpeedRandom), s.Speed);
+            s.Speed = Finite.NonNegative(Speed);
+            s.SpeedRandom = math.min(Finite.NonNegative(SpeedRandom), s.Speed);
             if ((uint)RateMode > (uint)FluidTapRateMode.LitresPerSecond)
                 s.RateMode = d.RateMode;
-            s.Rate = NonNegative(Rate);
-            s.VolumeFlow = NonNegative(VolumeFlow);
-            s.PulsePeriod = NonNegative(PulsePeriod);
+            s.Rate = Finite.NonNegative(Rate);
+            s.VolumeFlow = Finite.NonNegative(VolumeFlow);
+            s.PulsePeriod = Finite.NonNegative(PulsePeriod);
             s.PulseDutyCycle = PulseDutyCycle > 0f && math.isfinite(PulseDutyCycle) ? math.min(PulseDutyCycle, 1f) : 1f;
-            s.Duration = NonNegative(Duration);
-            s.StartDelay = NonNegative(StartDelay);
-            s.Prewarm = NonNegative(Prewarm);
+            s.Duration = Finite.NonNegative(Duration);
+            s.StartDelay = Finite.NonNegative(StartDelay);
+            s.Prewarm = Finite.NonNegative(Prewarm);
             s.MaxAlive = math.max(0, MaxAlive);
-            s.Lifetime = NonNegative(Lifetime);
-            s.LifetimeRandom = math.min(NonNegative(LifetimeRandom), s.Lifetime);
+            s.Lifetime = Finite.NonNegative(Lifetime);
+            s.LifetimeRandom = math.min(Finite.NonNegative(LifetimeRandom), s.Lifetime);
             s.Attribute = math.isfinite(Attribute) ? Attribute : d.Attribute;
             return s;
         }
 
-        static float NonNegative(float v) => math.isfinite(v) ? math.max(0f, v) : 0f;
     }
 }
