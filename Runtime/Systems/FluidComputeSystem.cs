@@ -35,6 +35,7 @@ namespace SoftBodyDynamics
 
         readonly Dictionary<Entity, Run> m_Runs = new Dictionary<Entity, Run>();
         readonly HashSet<Entity> m_Declined = new HashSet<Entity>();
+        readonly List<Entity> m_Gone = new List<Entity>();
         EntityQuery m_Fluids, m_Colliders, m_Taps, m_Drains;
 
         protected override void OnCreate()
@@ -187,11 +188,11 @@ namespace SoftBodyDynamics
         /// <summary>Releases the GPU buffers of fluids that no longer exist.</summary>
         void ReleaseRemoved(EntityManager m)
         {
-            var gone = new List<Entity>();
+            m_Gone.Clear();
             foreach (var pair in m_Runs)
                 if (!m.Exists(pair.Key))
-                    gone.Add(pair.Key);
-            foreach (Entity e in gone)
+                    m_Gone.Add(pair.Key);
+            foreach (Entity e in m_Gone)
             {
                 m_Runs[e].Solver.Dispose();
                 m_Runs[e].Spawns.Dispose();

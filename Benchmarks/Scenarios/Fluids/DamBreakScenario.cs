@@ -63,15 +63,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             float a = (float)MartinMoyce1952.ColumnWidth;
             float dx = a / m_CellsAcross;
             FluidParameters p = m_Parameters;
-            p.ParticleSpacing = dx;
-            p.DomainMin = float3.zero;
-            p.DomainMax = new float3(6f * a, 3f * a, k_Depth * dx);
-            p.Gravity = new float3(0f, -9.81f, 0f);
             p.MaxSubsteps = FluidParameters.SubstepLimit;
-            m_Constants = new FluidConstants(p);
-            int count = FluidScene.BlockCount(float3.zero, new float3(a, 2f * a, k_Depth * dx), dx);
-            m_Buffers = new FluidBuffers(count, m_Constants.Grid);
-            m_InitialCount = FluidScene.FillBlock(m_Buffers, float3.zero, new float3(a, 2f * a, k_Depth * dx), dx);
+            m_Buffers = FluidScene.BlockInBox(p, dx, new float3(6f * a, 3f * a, k_Depth * dx), new float3(a, 2f * a, k_Depth * dx), out m_Constants);
+            m_InitialCount = m_Buffers.Status.Count;
             m_InitialPositions = (float3[])m_Buffers.Positions.Clone();
             m_InitialIds = (int[])m_Buffers.Ids.Clone();
             int frames = (int)Math.Ceiling(EndT / MartinMoyce1952.DimensionlessTime(FrameSeconds)) + 2;

@@ -30,6 +30,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return n;
         }
 
+        /// <summary>
+        /// The fluid of <paramref name="parameters"/> at <paramref name="spacing"/> in the box [0, <paramref name="domainMax"/>]
+        /// under Earth gravity (−9.81 m/s² along y), its buffers sized for and filled with the lattice block [0, <paramref name="block"/>).
+        /// </summary>
+        public static FluidBuffers BlockInBox(FluidParameters parameters, float spacing, float3 domainMax, float3 block, out FluidConstants constants)
+        {
+            parameters.ParticleSpacing = spacing;
+            parameters.DomainMin = float3.zero;
+            parameters.DomainMax = domainMax;
+            parameters.Gravity = new float3(0f, -9.81f, 0f);
+            constants = new FluidConstants(parameters);
+            var b = new FluidBuffers(BlockCount(float3.zero, block, spacing), constants.Grid);
+            FillBlock(b, float3.zero, block, spacing);
+            return b;
+        }
+
         /// <summary>Lattice points of a block (for sizing buffers).</summary>
         public static int BlockCount(float3 lo, float3 hi, float spacing) =>
             (int)math.floor((hi.x - lo.x) / spacing + 1e-3f) * (int)math.floor((hi.y - lo.y) / spacing + 1e-3f) * (int)math.floor((hi.z - lo.z) / spacing + 1e-3f);

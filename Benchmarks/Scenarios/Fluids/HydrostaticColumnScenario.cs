@@ -48,14 +48,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            FluidParameters p = m_Parameters;
-            p.ParticleSpacing = k_Spacing;
-            p.DomainMin = float3.zero;
-            p.DomainMax = new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z);
-            p.Gravity = new float3(0f, -9.81f, 0f);
-            m_Constants = new FluidConstants(p);
-            m_Buffers = new FluidBuffers(FluidScene.BlockCount(float3.zero, s_Block, k_Spacing), m_Constants.Grid);
-            m_Initial = FluidScene.FillBlock(m_Buffers, float3.zero, s_Block, k_Spacing);
+            m_Buffers = FluidScene.BlockInBox(m_Parameters, k_Spacing, new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z), s_Block, out m_Constants);
+            m_Initial = m_Buffers.Status.Count;
             int frames = (int)Math.Round(m_SettleSeconds / k_Frame);
             double early = double.NaN;
             for (int f = 0; f < frames; f++)

@@ -248,8 +248,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
             p.ViscosityIterations = 2;
             var c = new FluidConstants(p);
-            FluidBuffers a = FluidTestScenes.Block(c, 600, float3.zero, new float3(0.2f, 0.2f, 0.1f));
-            FluidBuffers b = FluidTestScenes.Block(c, 600, float3.zero, new float3(0.2f, 0.2f, 0.1f));
+            var (a, b) = FluidTestScenes.Twins(c, 600, float3.zero, new float3(0.2f, 0.2f, 0.1f));
             for (int f = 0; f < 10; f++)
             {
                 FluidTestScenes.Step(c, a, 1f / 60f);
@@ -284,8 +283,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.ViscosityIterations = 3;
             var c = new FluidConstants(p);
             var colliders = new[] { ColliderShape.Sphere(new float3(0.15f, 0.05f, 0.15f), 0.05f) };
-            FluidBuffers a = FluidTestScenes.Block(c, 800, new float3(0.05f, 0.15f, 0.05f), new float3(0.25f, 0.3f, 0.2f));
-            FluidBuffers b = FluidTestScenes.Block(c, 800, new float3(0.05f, 0.15f, 0.05f), new float3(0.25f, 0.3f, 0.2f));
+            var (a, b) = FluidTestScenes.Twins(c, 800, new float3(0.05f, 0.15f, 0.05f), new float3(0.25f, 0.3f, 0.2f));
             for (int f = 0; f < 15; f++)
             {
                 FluidSolver.Step(c, colliders, 1f / 60f, a.Particles, a.Scratch, ref a.Status, 1);

@@ -36,6 +36,10 @@ namespace SoftBodyDynamics.Tests.Solvers
             return b;
         }
 
+        /// <summary>Two fluids with the same block, for tests that run them two ways and compare the bits.</summary>
+        public static (FluidBuffers, FluidBuffers) Twins(in FluidConstants c, int capacity, float3 lo, float3 hi) =>
+            (Block(c, capacity, lo, hi), Block(c, capacity, lo, hi));
+
         public static FluidStepReport Step(in FluidConstants c, FluidBuffers b, float dt) =>
             FluidSolver.Step(c, default, dt, b.Particles, b.Scratch, ref b.Status);
 

@@ -30,24 +30,16 @@ namespace SoftBodyDynamics.Tests.Compute
             public int Count, Substeps;
         }
 
-        static FluidConstants DamBreak(FluidSolverKind solver, out float3 columnTop)
+        static readonly float s_A = (float)MartinMoyce1952.ColumnWidth, s_Dx = s_A / 10f;
+        static readonly float3 s_Domain = new float3(6f * s_A, 3f * s_A, 4f * s_Dx), s_Column = new float3(s_A, 2f * s_A, 4f * s_Dx);
+
+        /// <summary>The dam break at a/10 (as DamBreakScenario sets it up), its column jittered by up to <paramref name="jitter"/> m.</summary>
+        static FluidBuffers DamBreak(FluidSolverKind solver, float jitter, out FluidConstants c)
         {
-            float a = (float)MartinMoyce1952.ColumnWidth, dx = a / 10f;
             FluidParameters p = FluidParameters.Default;
             p.Solver = solver;
-            p.ParticleSpacing = dx;
-            p.DomainMin = float3.zero;
-            p.DomainMax = new float3(6f * a, 3f * a, 4f * dx);
-            p.Gravity = new float3(0f, -9.81f, 0f);
             p.MaxSubsteps = FluidParameters.SubstepLimit;
-            columnTop = new float3(a, 2f * a, 4f * dx);
-            return new FluidConstants(p);
-        }
-
-        static FluidBuffers Column(in FluidConstants c, float3 top, float jitter)
-        {
-            var b = new FluidBuffers(FluidScene.BlockCount(float3.zero, top, c.Parameters.ParticleSpacing), c.Grid);
-            FluidScene.FillBlock(b, float3.zero, top, c.Parameters.ParticleSpacing);
+            FluidBuffers b = FluidScene.BlockInBox(p, s_Dx, s_Domain, s_Column, out c);
             if (jitter > 0f)
             {
                 var random = new Unity.Mathematics.Random(5u);
@@ -73,9 +65,9 @@ namespace SoftBodyDynamics.Tests.Compute
             return run;
         }
 
-        static Run Cpu(in FluidConstants c, float3 top, float jitter)
+        static Run Cpu(FluidSolverKind solver, float jitter)
         {
-            FluidBuffers b = Column(c, top, jitter);
+            FluidBuffers b = DamBreak(solver, jitter, out FluidConstants c);
             int substeps = 0;
             var run = new Run();
             for (int f = 0; f < Frames; f++)
@@ -87,9 +79,9 @@ namespace SoftBodyDynamics.Tests.Compute
             return Measure(b, c, substeps, run);
         }
 
-        static Run Gpu(LavapipeDevice device, LavapipeComputeShader shader, in FluidConstants c, float3 top)
+        static Run Gpu(LavapipeDevice device, LavapipeComputeShader shader, FluidSolverKind solver)
         {
-            FluidBuffers b = Column(c, top, 0f);
+            FluidBuffers b = DamBreak(solver, 0f, out FluidConstants c);
             using var g = new LavapipeFluidSolver(device, shader, c, b.Capacity);
             g.Upload(b.Particles, b.Status.Count);
             int substeps = 0;
@@ -128,11 +120,10 @@ namespace SoftBodyDynamics.Tests.Compute
         [TestCase(FluidSolverKind.PositionBased)]
         public void DamBreak200Frames_IsStatisticallyTheCpuRun(FluidSolverKind solver)
         {
-            FluidConstants c = DamBreak(solver, out float3 top);
-            float dx = c.Parameters.ParticleSpacing;
-            Run cpu = Cpu(c, top, 0f);
-            Run perturbed = Cpu(c, top, 1e-7f);
-            Run gpu = Gpu(Lavapipe.Device, Lavapipe.FluidShader, c, top);
+            float dx = s_Dx;
+            Run cpu = Cpu(solver, 0f);
+            Run perturbed = Cpu(solver, 1e-7f);
+            Run gpu = Gpu(Lavapipe.Device, Lavapipe.FluidShader, solver);
             Lavapipe.AssertValid();
             double frontGpu = MaxDifference(gpu.Front, cpu.Front), frontPerturbed = MaxDifference(perturbed.Front, cpu.Front);
             double histGpu = L1(gpu.Histogram, cpu.Histogram), histPerturbed = L1(perturbed.Histogram, cpu.Histogram);
@@ -151,7 +142,7 @@ namespace SoftBodyDynamics.Tests.Compute
         [TestCase(65)]
         public void Step_OddCounts_KeepEveryParticleAndStayFinite(int count)
         {
-            FluidConstants c = DamBreak(FluidSolverKind.WeaklyCompressible, out _);
+            DamBreak(FluidSolverKind.WeaklyCompressible, 0f, out FluidConstants c);
             var b = new FluidBuffers(Math.Max(count, 1), c.Grid);
             var random = new Unity.Mathematics.Random(11u);
             for (int i = 0; i < count; i++)
