@@ -82,11 +82,98 @@ static class Program
             md.AppendLine($"| **substep** | **{totalGpu:F3}** | **{totalCpu:F3}** | **{totalGpu / totalCpu:F2}** | **{totalGpu * 1e6 / count:F0}** |");
             md.AppendLine();
         }
+        SoftBodies(device, md, quick ? 8 : 16, repeats);
         Console.Write(md.ToString());
         if (outPath != null)
             File.WriteAllText(outPath, md.ToString());
         Console.WriteLine("RESULT lavapipetiming 1 0");
         return 0;
+    }
+
+    /// <summary>
+    /// The soft-body kernels: one XPBD substep (one iteration over every colour) of a jelly box of n³ cells, lavapipe
+    /// against SpringForces.ProjectColor run colour by colour on one core; and the cluster sums of a lattice body
+    /// (clusters of 3³) on lavapipe alone (the CPU computes them inside ClusterGoals, together with the rotations).
+    /// </summary>
+    static void SoftBodies(LavapipeDevice device, StringBuilder md, int cells, int repeats)
+    {
+        using var shader = new LavapipeComputeShader(device, LavapipeSoftBodyCommands.ComputePath());
+        using var g = new LavapipeSoftBodyCommands(device, shader);
+        var issues = new List<SoftBodyIssue>();
+        float edge = 0.02f * cells;
+        TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(edge), new int3(cells), new float3(0.5f * edge));
+        MassSpringModelData body = MassSpringModelData.FromMesh(mesh, ElasticMaterial.Jelly, new MassSpringBuildSettings(), issues, out _, null);
+        int n = body.ParticleCount, m = body.SpringCount;
+        var x = new float3[n];
+        var v = new float3[n];
+        for (int i = 0; i < n; i++)
+            x[i] = body.RestPositions[i] * 1.05f;
+        var springs = new float4[2 * m];
+        SoftBodyComputeStep.PackSprings(body.Springs, springs);
+        SoftBodyComputeStep.PackVectors(x, g.Create(SoftBodyComputeBuffer.X, 16L * n).As<float4>());
+        SoftBodyComputeStep.PackVectors(v, g.Create(SoftBodyComputeBuffer.V, 16L * n).As<float4>());
+        SoftBodyComputeStep.PackVectors(body.RestPositions, g.Create(SoftBodyComputeBuffer.Rest, 16L * n).As<float4>());
+        body.InverseMasses.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.InverseMass, 4L * n).As<float>());
+        springs.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.Springs, 32L * m).As<float4>());
+        body.Coloring.Elements.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.ColorSprings, 4L * m).As<int>());
+        g.Create(SoftBodyComputeBuffer.Multipliers, 4L * m);
+        g.Create(SoftBodyComputeBuffer.P, 16L * n);
+        const float h = 1f / 240f;
+        var gpu = new List<double>();
+        var cpu = new List<double>();
+        var p = new float3[n];
+        var lambda = new float3[2 * m];
+        for (int r = 0; r <= repeats; r++)
+        {
+            var commands = g;
+            SoftBodyComputeStep.RecordXpbdSubstep(ref commands, n, m, body.Coloring.ColorOffsets, 1, h);
+            double ms = g.Flush();
+            long t0 = Stopwatch.GetTimestamp();
+            for (int i = 0; i < n; i++)
+                p[i] = x[i] + h * v[i];
+            Array.Clear(lambda, 0, lambda.Length);
+            for (int c = 0; c < body.Coloring.ColorCount; c++)
+                SpringForces.ProjectColor(body.Springs, body.Coloring.Elements, body.RestPositions, x, body.InverseMasses, h,
+                    body.Coloring.ColorOffsets[c], body.Coloring.ColorOffsets[c + 1], p, lambda);
+            for (int i = 0; i < n; i++)
+                v[i] = (p[i] - x[i]) / h;
+            double cms = (Stopwatch.GetTimestamp() - t0) * 1000.0 / Stopwatch.Frequency;
+            Array.Clear(v, 0, n);
+            if (r > 0) { gpu.Add(ms); cpu.Add(cms); }
+        }
+        md.AppendLine($"### Soft bodies: XPBD substep, {n} particles, {m} springs in {body.Coloring.ColorCount} colours (one iteration)");
+        md.AppendLine();
+        md.AppendLine("| kernels | lavapipe ms | C# ms (1 core) | lavapipe / C# | lavapipe ns per spring |");
+        md.AppendLine("|---|---:|---:|---:|---:|");
+        double gm = Median(gpu), cm = Median(cpu);
+        md.AppendLine($"| predict, clear λ, {body.Coloring.ColorCount} colour dispatches, velocities (one submit) | {gm:F3} | {cm:F3} | {gm / cm:F2} | {gm * 1e6 / m:F0} |");
+        md.AppendLine();
+
+        ShapeMatchingModelData lattice = LatticeBody.Create(new int3(cells), 0.02f, 3, 1f);
+        int ln = lattice.ParticleCount, clusters = lattice.ClusterCount;
+        var rest = new float4[clusters];
+        for (int c = 0; c < clusters; c++)
+            rest[c] = new float4(lattice.ClusterRest[c].RestCenter, lattice.ClusterRest[c].TotalMass);
+        SoftBodyComputeStep.PackVectors(lattice.RestPositions, g.Create(SoftBodyComputeBuffer.X, 16L * ln).As<float4>());
+        SoftBodyComputeStep.PackVectors(lattice.RestPositions, g.Create(SoftBodyComputeBuffer.Rest, 16L * ln).As<float4>());
+        lattice.ClusterOffsets.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.ClusterOffsets, 4L * (clusters + 1)).As<int>());
+        lattice.ClusterParticles.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.ClusterParticles, 4L * lattice.ClusterParticles.Length).As<int>());
+        lattice.ClusterWeights.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.ClusterWeights, 4L * lattice.ClusterWeights.Length).As<float>());
+        rest.AsSpan().CopyTo(g.Create(SoftBodyComputeBuffer.ClusterRest, 16L * clusters).As<float4>());
+        g.Create(SoftBodyComputeBuffer.ClusterCenters, 16L * clusters);
+        g.Create(SoftBodyComputeBuffer.ClusterApq, 48L * clusters);
+        var sums = new List<double>();
+        for (int r = 0; r <= repeats; r++)
+        {
+            var commands = g;
+            SoftBodyComputeStep.RecordClusterSums(ref commands, clusters);
+            double ms = g.Flush();
+            if (r > 0) sums.Add(ms);
+        }
+        md.AppendLine($"### Soft bodies: cluster sums, {ln} particles in {clusters} clusters of up to 27 ({lattice.ClusterParticles.Length} memberships)");
+        md.AppendLine();
+        md.AppendLine($"lavapipe {Median(sums):F3} ms, {Median(sums) * 1e6 / lattice.ClusterParticles.Length:F0} ns per membership (one group of 64 threads per cluster).");
+        md.AppendLine();
     }
 
     static double Median(List<double> v)

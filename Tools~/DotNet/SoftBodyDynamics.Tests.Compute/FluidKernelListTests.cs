@@ -52,11 +52,11 @@ namespace SoftBodyDynamics.Tests.Compute
                 Assert.That(Regex.IsMatch(text, @"\bWave[A-Z]\w*\s*\("), Is.False, name + ": a wave intrinsic");
                 Assert.That(Regex.IsMatch(text, @"\b(u?int64_t|double)\b"), Is.False, name + ": a 64-bit type");
                 // groupshared per file (a kernel uses at most its file's): the scan's 512 uints (2 KB), the cluster sums'
-                // 3 × 256 float3 (9 KB), under OpenGL ES 3.1's 16 KB.
+                // 3 × 64 float3 (2.3 KB), under OpenGL ES 3.1's 16 KB.
                 int bytes = 0;
                 foreach (Match m in Regex.Matches(text, @"groupshared\s+(\w+)\s+\w+\s*\[\s*(\w+)\s*\]"))
                 {
-                    int elements = m.Groups[2].Value switch { "SCAN_BLOCK" => 512, "SOFT_BODY_GROUP" => 256, var v => int.Parse(v) };
+                    int elements = m.Groups[2].Value switch { "SCAN_BLOCK" => 512, "CLUSTER_GROUP" => 64, var v => int.Parse(v) };
                     int size = m.Groups[1].Value switch { "float3" => 12, "float4" or "uint4" => 16, "float2" or "uint2" => 8, _ => 4 };
                     bytes += elements * size;
                 }
