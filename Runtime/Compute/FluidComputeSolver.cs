@@ -17,14 +17,8 @@ namespace SoftBodyDynamics.Compute
     /// </summary>
     public sealed class FluidComputeSolver : IFluidComputeCommands, IDisposable
     {
-        static readonly int[] s_BufferIds = PropertyIds(Enum.GetNames(typeof(FluidComputeBuffer)));
-        static readonly int[] s_GlobalIds = PropertyIds(Enum.GetNames(typeof(FluidComputeGlobal)));
-
-        readonly ComputeShader m_Shader;
-        readonly int[] m_Kernels;
-        readonly int[] m_GroupSizes;
-        readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[s_BufferIds.Length];
-        readonly int[] m_Ints = new int[4];
+        readonly ComputeKernelSet m_Kernels;
+        readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[Enum.GetValues(typeof(FluidComputeBuffer)).Length];
         readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
         FluidConstants m_Constants;
         int m_Capacity, m_Colliders, m_Drains;
@@ -32,28 +26,11 @@ namespace SoftBodyDynamics.Compute
         AsyncGPUReadbackRequest m_Readback;
         float m_LastMaxSpeed;
 
-        static int[] PropertyIds(string[] names)
-        {
-            var ids = new int[names.Length];
-            for (int i = 0; i < names.Length; i++)
-                ids[i] = Shader.PropertyToID("_" + names[i]);
-            return ids;
-        }
-
         /// <summary>A solver for the fluid <paramref name="constants"/> with room for <paramref name="capacity"/> particles.</summary>
         public FluidComputeSolver(ComputeShader shader, in FluidConstants constants, int capacity)
         {
-            m_Shader = shader;
+            m_Kernels = new ComputeKernelSet(shader, typeof(FluidKernel), typeof(FluidComputeBuffer), typeof(FluidComputeGlobal));
             m_Constants = constants;
-            string[] names = Enum.GetNames(typeof(FluidKernel));
-            m_Kernels = new int[names.Length];
-            m_GroupSizes = new int[names.Length];
-            for (int k = 0; k < names.Length; k++)
-            {
-                m_Kernels[k] = shader.FindKernel(names[k]);
-                shader.GetKernelThreadGroupSizes(m_Kernels[k], out uint x, out _, out _);
-                m_GroupSizes[k] = (int)x;
-            }
             Allocate(math.max(capacity, 1));
         }
 
@@ -86,9 +63,8 @@ namespace SoftBodyDynamics.Compute
                 m_Buffers[b] = created;
             }
             m_Capacity = capacity;
-            for (int k = 0; k < m_Kernels.Length; k++)
-                for (int b = 0; b < m_Buffers.Length; b++)
-                    m_Shader.SetBuffer(m_Kernels[k], s_BufferIds[b], m_Buffers[b]);
+            for (int b = 0; b < m_Buffers.Length; b++)
+                m_Kernels.Bind(b, m_Buffers[b]);
         }
 
         /// <summary>Uploads the colliders (world space) and drains of the following steps.</summary>
@@ -109,10 +85,7 @@ namespace SoftBodyDynamics.Compute
         {
             if (capacity <= m_Capacity)
                 return;
-            int grown = m_Capacity;
-            while (grown < capacity)
-                grown *= 2;
-            Allocate(grown);
+            Allocate(FluidComputeLayout.GrownCapacity(m_Capacity, capacity));
         }
 
         /// <summary>
@@ -192,25 +165,10 @@ namespace SoftBodyDynamics.Compute
             m_ReadbackPending = true;
         }
 
-        public void SetVector(FluidComputeGlobal name, float4 value) =>
-            m_Shader.SetVector(s_GlobalIds[(int)name], new Vector4(value.x, value.y, value.z, value.w));
-
-        public void SetInts(FluidComputeGlobal name, int4 value)
-        {
-            m_Ints[0] = value.x; m_Ints[1] = value.y; m_Ints[2] = value.z; m_Ints[3] = value.w;
-            m_Shader.SetInts(s_GlobalIds[(int)name], m_Ints);
-        }
-
-        public void Dispatch(FluidKernel kernel, int threads)
-        {
-            if (threads <= 0)
-                return;
-            int group = m_GroupSizes[(int)kernel];
-            m_Shader.Dispatch(m_Kernels[(int)kernel], (threads + group - 1) / group, 1, 1);
-        }
-
-        public void DispatchIndirect(FluidKernel kernel) =>
-            m_Shader.DispatchIndirect(m_Kernels[(int)kernel], m_Buffers[(int)FluidComputeBuffer.Args], 0);
+        public void SetVector(FluidComputeGlobal name, float4 value) => m_Kernels.SetVector((int)name, value);
+        public void SetInts(FluidComputeGlobal name, int4 value) => m_Kernels.SetInts((int)name, value);
+        public void Dispatch(FluidKernel kernel, int threads) => m_Kernels.Dispatch((int)kernel, threads);
+        public void DispatchIndirect(FluidKernel kernel) => m_Kernels.DispatchIndirect((int)kernel, m_Buffers[(int)FluidComputeBuffer.Args]);
 
         /// <summary>Releases every buffer.</summary>
         public void Dispose()

@@ -14,35 +14,12 @@ namespace SoftBodyDynamics.Compute
     /// </summary>
     public sealed class SoftBodyComputeSolver : ISoftBodyComputeCommands, IDisposable
     {
-        static readonly int[] s_BufferIds = PropertyIds(Enum.GetNames(typeof(SoftBodyComputeBuffer)));
-        static readonly int[] s_GlobalIds = PropertyIds(Enum.GetNames(typeof(SoftBodyComputeGlobal)));
-
-        readonly ComputeShader m_Shader;
-        readonly int[] m_Kernels;
-        readonly int[] m_GroupSizes;
-        readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[s_BufferIds.Length];
-        readonly int[] m_Ints = new int[4];
-
-        static int[] PropertyIds(string[] names)
-        {
-            var ids = new int[names.Length];
-            for (int i = 0; i < names.Length; i++)
-                ids[i] = Shader.PropertyToID("_" + names[i]);
-            return ids;
-        }
+        readonly ComputeKernelSet m_Kernels;
+        readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[Enum.GetValues(typeof(SoftBodyComputeBuffer)).Length];
 
         public SoftBodyComputeSolver(ComputeShader shader)
         {
-            m_Shader = shader;
-            string[] names = Enum.GetNames(typeof(SoftBodyKernel));
-            m_Kernels = new int[names.Length];
-            m_GroupSizes = new int[names.Length];
-            for (int k = 0; k < names.Length; k++)
-            {
-                m_Kernels[k] = shader.FindKernel(names[k]);
-                shader.GetKernelThreadGroupSizes(m_Kernels[k], out uint x, out _, out _);
-                m_GroupSizes[k] = (int)x;
-            }
+            m_Kernels = new ComputeKernelSet(shader, typeof(SoftBodyKernel), typeof(SoftBodyComputeBuffer), typeof(SoftBodyComputeGlobal));
             // Every kernel must have each buffer it declares bound, even one it is not dispatched with.
             for (int b = 0; b < m_Buffers.Length; b++)
                 Ensure((SoftBodyComputeBuffer)b, 1, 16);
@@ -59,8 +36,7 @@ namespace SoftBodyDynamics.Compute
             buffer?.Release();
             buffer = new GraphicsBuffer(GraphicsBuffer.Target.Structured, math.max(count, 1), stride);
             m_Buffers[(int)id] = buffer;
-            for (int k = 0; k < m_Kernels.Length; k++)
-                m_Shader.SetBuffer(m_Kernels[k], s_BufferIds[(int)id], buffer);
+            m_Kernels.Bind((int)id, buffer);
             return buffer;
         }
 
@@ -71,28 +47,10 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Allocates a buffer the kernels write (multipliers, predicted positions, cluster results).</summary>
         public void Allocate(SoftBodyComputeBuffer id, int count, int stride) => Ensure(id, count, stride);
 
-        public void SetVector(SoftBodyComputeGlobal name, float4 value) =>
-            m_Shader.SetVector(s_GlobalIds[(int)name], new Vector4(value.x, value.y, value.z, value.w));
-
-        public void SetInts(SoftBodyComputeGlobal name, int4 value)
-        {
-            m_Ints[0] = value.x; m_Ints[1] = value.y; m_Ints[2] = value.z; m_Ints[3] = value.w;
-            m_Shader.SetInts(s_GlobalIds[(int)name], m_Ints);
-        }
-
-        public void Dispatch(SoftBodyKernel kernel, int threads)
-        {
-            if (threads <= 0)
-                return;
-            int group = m_GroupSizes[(int)kernel];
-            m_Shader.Dispatch(m_Kernels[(int)kernel], (threads + group - 1) / group, 1, 1);
-        }
-
-        public void DispatchGroups(SoftBodyKernel kernel, int groups)
-        {
-            if (groups > 0)
-                m_Shader.Dispatch(m_Kernels[(int)kernel], groups, 1, 1);
-        }
+        public void SetVector(SoftBodyComputeGlobal name, float4 value) => m_Kernels.SetVector((int)name, value);
+        public void SetInts(SoftBodyComputeGlobal name, int4 value) => m_Kernels.SetInts((int)name, value);
+        public void Dispatch(SoftBodyKernel kernel, int threads) => m_Kernels.Dispatch((int)kernel, threads);
+        public void DispatchGroups(SoftBodyKernel kernel, int groups) => m_Kernels.DispatchGroups((int)kernel, groups);
 
         public void Dispose()
         {

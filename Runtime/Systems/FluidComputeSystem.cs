@@ -53,10 +53,7 @@ namespace SoftBodyDynamics
             float dt = SystemAPI.Time.DeltaTime;
             EntityManager m = EntityManager;
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.Temp);
-            NativeArray<FluidTap> taps = m_Taps.ToComponentDataArray<FluidTap>(Allocator.Temp);
-            NativeArray<Entity> tapEntities = m_Taps.ToEntityArray(Allocator.Temp);
-            NativeArray<FluidDrainVolume> drains = m_Drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp);
+            var inputs = FluidFrameInputs.Gather(m_Colliders, m_Taps, m_Drains);
             ReleaseRemoved(m);
             for (int f = 0; f < fluids.Length; f++)
             {
@@ -65,14 +62,11 @@ namespace SoftBodyDynamics
                 if (!m_Runs.TryGetValue(fluid, out Run run) && !TryTake(m, fluid, settings, out run))
                     continue;
                 FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
-                StepOnGpu(m, fluid, settings, ref runtime, run, colliders, taps, tapEntities, drains, dt);
+                StepOnGpu(m, fluid, settings, ref runtime, run, inputs, dt);
                 m.SetComponentData(fluid, runtime);
             }
             fluids.Dispose();
-            colliders.Dispose();
-            taps.Dispose();
-            tapEntities.Dispose();
-            drains.Dispose();
+            inputs.Dispose();
         }
 
         /// <summary>Takes a fluid onto the GPU when its settings and the device allow it; says once why not.</summary>
@@ -126,17 +120,14 @@ namespace SoftBodyDynamics
 
         /// <summary>Colliders and drains, the taps' spawns, the step, then the read-backs the settings ask for.</summary>
         static void StepOnGpu(EntityManager m, Entity fluid, in FluidSettings settings, ref FluidRuntime runtime, Run run,
-            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
-            NativeArray<FluidDrainVolume> drainVolumes, float dt)
+            in FluidFrameInputs inputs, float dt)
         {
             FluidComputeSolver solver = run.Solver;
-            var drains = new NativeArray<FluidDrain>(drainVolumes.Length, Allocator.Temp);
-            int drainCount = 0;
-            for (int d = 0; d < drainVolumes.Length; d++)
-                if (drainVolumes[d].Fluid == fluid)
-                    drains[drainCount++] = drainVolumes[d].Drain;
-            solver.SetShapes(colliders.Reinterpret<ColliderShape>(), drains.GetSubArray(0, drainCount));
-            FluidFrameReport frame = run.Spawns.Emit(m, fluid, run.Constants, ref runtime, solver, taps, tapEntities, math.max(1, settings.Budget), dt);
+            var drains = new NativeArray<FluidDrain>(inputs.Drains.Length, Allocator.Temp);
+            int drainCount = FluidSystemFrame.DrainsOf(fluid, inputs.Drains, drains);
+            solver.SetShapes(inputs.Colliders.Reinterpret<ColliderShape>(), drains.GetSubArray(0, drainCount));
+            FluidFrameReport frame = run.Spawns.Emit(m, fluid, run.Constants, ref runtime, solver, inputs.Taps, inputs.TapEntities,
+                math.max(1, settings.Budget), dt);
             frame.Step.Substeps = solver.Step(dt);
             runtime.LastFrame = frame;
             ReadBack(m, fluid, settings, ref runtime, run);

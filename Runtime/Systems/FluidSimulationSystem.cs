@@ -50,10 +50,11 @@ namespace SoftBodyDynamics
         {
             float dt = SystemAPI.Time.DeltaTime;
             state.CompleteDependency();
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
-            NativeArray<FluidTap> taps = m_Taps.ToComponentDataArray<FluidTap>(Allocator.Temp);
-            NativeArray<Entity> tapEntities = m_Taps.ToEntityArray(Allocator.Temp);
-            NativeArray<FluidDrainVolume> drains = m_Drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp);
+            var inputs = FluidFrameInputs.Gather(m_Colliders, m_Taps, m_Drains);
+            NativeArray<SoftBodyCollider> colliders = inputs.Colliders;
+            NativeArray<FluidTap> taps = inputs.Taps;
+            NativeArray<Entity> tapEntities = inputs.TapEntities;
+            NativeArray<FluidDrainVolume> drains = inputs.Drains;
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
 
             // Entities storage first, on the main thread: it changes the world's structure.
@@ -80,10 +81,7 @@ namespace SoftBodyDynamics
                 m.SetComponentData(fluid, runtime);
             }
             fluids.Dispose();
-            colliders.Dispose();
-            taps.Dispose();
-            tapEntities.Dispose();
-            drains.Dispose();
+            inputs.Dispose();
         }
 
         /// <summary>Drains, taps, then the substeps as a job chain (<see cref="FluidJobChain"/>), completed here.</summary>

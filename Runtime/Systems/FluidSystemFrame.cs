@@ -21,6 +21,32 @@ namespace SoftBodyDynamics
         public DynamicBuffer<FluidTapRuntime> Taps;
     }
 
+    /// <summary>The scene's colliders, taps and drains, gathered once per update of a fluid system.</summary>
+    struct FluidFrameInputs : System.IDisposable
+    {
+        /// <summary>For the pass jobs too (TempJob).</summary>
+        public NativeArray<SoftBodyCollider> Colliders;
+        public NativeArray<FluidTap> Taps;
+        public NativeArray<Entity> TapEntities;
+        public NativeArray<FluidDrainVolume> Drains;
+
+        public static FluidFrameInputs Gather(EntityQuery colliders, EntityQuery taps, EntityQuery drains) => new FluidFrameInputs
+        {
+            Colliders = colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob),
+            Taps = taps.ToComponentDataArray<FluidTap>(Allocator.Temp),
+            TapEntities = taps.ToEntityArray(Allocator.Temp),
+            Drains = drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp),
+        };
+
+        public void Dispose()
+        {
+            Colliders.Dispose();
+            Taps.Dispose();
+            TapEntities.Dispose();
+            Drains.Dispose();
+        }
+    }
+
     /// <summary>One fluid's taps for a frame: their settings, bursts and states (from the fluid's tap buffer), written back by <see cref="Store"/>.</summary>
     struct FluidTapSet : System.IDisposable
     {
@@ -115,10 +141,7 @@ namespace SoftBodyDynamics
             FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
             var tapSet = FluidTapSet.Collect(entity, a.Taps, taps, tapEntities);
             var drains = new NativeArray<FluidDrain>(drainVolumes.Length, Allocator.Temp);
-            int drainCount = 0;
-            for (int d = 0; d < drainVolumes.Length; d++)
-                if (drainVolumes[d].Fluid == entity)
-                    drains[drainCount++] = drainVolumes[d].Drain;
+            int drainCount = DrainsOf(entity, drainVolumes, drains);
             var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
             if (!runtime.Prewarmed)
             {
@@ -132,6 +155,16 @@ namespace SoftBodyDynamics
             tapSet.Dispose();
             drains.Dispose();
             return report;
+        }
+
+        /// <summary>Writes the drains of <paramref name="fluid"/> among <paramref name="volumes"/> to <paramref name="drains"/>; returns how many.</summary>
+        public static int DrainsOf(Entity fluid, NativeArray<FluidDrainVolume> volumes, NativeArray<FluidDrain> drains)
+        {
+            int count = 0;
+            for (int d = 0; d < volumes.Length; d++)
+                if (volumes[d].Fluid == fluid)
+                    drains[count++] = volumes[d].Drain;
+            return count;
         }
 
         /// <summary>Stores the frame report and logs what went out of bounds, naming the fluid.</summary>

@@ -47,24 +47,12 @@ namespace SoftBodyDynamics.Tests.Editor
             FluidParameters p = FluidParameters.Default;
             p.DomainMin = new float3(-0.2f, 0f, -0.2f);
             p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
-            Entity entity = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(entity, new FluidSettings
+            Entity entity = FluidTestEntities.Create(m_Manager, new FluidSettings
             {
                 Parameters = p, Budget = 2000, Color = new float4(1f), Storage = FluidStorage.Packed, Backend = backend, Readback = readback,
                 ReadbackInterval = 1,
             });
-            m_Manager.AddComponentData(entity, new FluidRuntime());
             m_Manager.AddComponentData(entity, new FluidComputeShader { Shader = shader });
-            m_Manager.AddBuffer<FluidPosition>(entity);
-            m_Manager.AddBuffer<FluidVelocity>(entity);
-            m_Manager.AddBuffer<FluidAge>(entity);
-            m_Manager.AddBuffer<FluidLifetime>(entity);
-            m_Manager.AddBuffer<FluidAttribute>(entity);
-            m_Manager.AddBuffer<FluidId>(entity);
-            m_Manager.AddBuffer<FluidScratchInt>(entity);
-            m_Manager.AddBuffer<FluidScratchFloat>(entity);
-            m_Manager.AddBuffer<FluidScratchVector>(entity);
-            m_Manager.AddBuffer<FluidTapRuntime>(entity);
             FluidTapSettings s = FluidTapSettings.Default;
             s.Position = new float3(0f, 0.3f, 0f);
             s.Rotation = quaternion.AxisAngle(new float3(1f, 0f, 0f), math.PI / 2f);

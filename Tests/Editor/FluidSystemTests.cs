@@ -44,20 +44,7 @@ namespace SoftBodyDynamics.Tests.Editor
             FluidParameters p = FluidParameters.Default;
             p.DomainMin = new float3(-0.2f, 0f, -0.2f);
             p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
-            Entity entity = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(entity, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f), Storage = storage, ParticlePrefab = prefab });
-            m_Manager.AddComponentData(entity, new FluidRuntime());
-            m_Manager.AddBuffer<FluidPosition>(entity);
-            m_Manager.AddBuffer<FluidVelocity>(entity);
-            m_Manager.AddBuffer<FluidAge>(entity);
-            m_Manager.AddBuffer<FluidLifetime>(entity);
-            m_Manager.AddBuffer<FluidAttribute>(entity);
-            m_Manager.AddBuffer<FluidId>(entity);
-            m_Manager.AddBuffer<FluidScratchInt>(entity);
-            m_Manager.AddBuffer<FluidScratchFloat>(entity);
-            m_Manager.AddBuffer<FluidScratchVector>(entity);
-            m_Manager.AddBuffer<FluidTapRuntime>(entity);
-            return entity;
+            return FluidTestEntities.Create(m_Manager, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f), Storage = storage, ParticlePrefab = prefab });
         }
 
         Entity CreateTap(Entity fluid, float rate, float lifetime)

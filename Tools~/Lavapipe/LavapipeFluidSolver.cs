@@ -88,10 +88,7 @@ namespace SoftBodyDynamics.Lavapipe
         {
             if (capacity <= m_Capacity)
                 return;
-            int grown = m_Capacity;
-            while (grown < capacity)
-                grown *= 2;
-            Allocate(grown, m_Cells);
+            Allocate(FluidComputeLayout.GrownCapacity(m_Capacity, capacity), m_Cells);
         }
 
         /// <summary>Uploads the colliders (world space) and drains the following steps use.</summary>

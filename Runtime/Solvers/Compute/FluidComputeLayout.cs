@@ -61,6 +61,15 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
+        /// <summary>The capacity grown by doubling from <paramref name="current"/> (≥ 1) until it holds <paramref name="wanted"/>.</summary>
+        public static int GrownCapacity(int current, int wanted)
+        {
+            long grown = math.max(current, 1);
+            while (grown < wanted)
+                grown *= 2;
+            return (int)math.min(grown, int.MaxValue);
+        }
+
         /// <summary>Most scan levels (512⁴ elements is more than <see cref="FluidGrid.MaxCells"/>).</summary>
         public const int MaxScanLevels = 4;
 
