@@ -78,6 +78,13 @@ namespace SoftBodyDynamics.Compute
             m_Buffers[(int)FluidComputeBuffer.Shapes].SetData(packed, 0, 0, math.max(n, 1));
         }
 
+        /// <summary>Marks the particles inside a drain (<see cref="FluidDrain.Apply"/>); the next step's sort removes them.</summary>
+        public void Drain()
+        {
+            var self = this;
+            FluidComputeStep.RecordDrain(ref self, ConstantsOf(0f, 0f));
+        }
+
         FluidComputeConstants ConstantsOf(float h, float dt) => FluidComputeConstants.Of(m_Constants, h, dt, m_Colliders, m_Drains);
 
         /// <summary>Grows every buffer to at least <paramref name="capacity"/> particles by doubling, keeping the state.</summary>
@@ -126,15 +133,14 @@ namespace SoftBodyDynamics.Compute
         }
 
         /// <summary>
-        /// Dispatches one step of <paramref name="dt"/> seconds: the drains, then the substeps, which follow the fastest
-        /// speed of the last completed read-back. Returns the substeps dispatched.
+        /// Dispatches one step of <paramref name="dt"/> seconds; its substeps follow the fastest speed of the last completed
+        /// read-back. Returns the substeps dispatched.
         /// </summary>
         public int Step(float dt)
         {
             if (!(dt > 0f) || !math.isfinite(dt))
                 return 0;
             var self = this;
-            FluidComputeStep.RecordDrain(ref self, ConstantsOf(0f, dt));
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, dt));
             int2 substeps = FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt);
             float h = dt / substeps.y;

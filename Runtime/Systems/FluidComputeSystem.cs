@@ -14,7 +14,7 @@ namespace SoftBodyDynamics
     /// (<see cref="FluidBackendChoice"/>; the reason for a fallback is logged once per fluid, and such a fluid stays with
     /// <see cref="FluidSimulationSystem"/>). A fluid it takes gets <see cref="FluidOnGpu"/>, a <see cref="FluidComputeSolver"/>
     /// holding its particles (uploaded once from the entity buffers), and each fixed step: its colliders and drains, the
-    /// taps' spawns (placed by the CPU emitter from the tap schedule, then appended on the GPU), the step's dispatches.
+    /// taps' spawns (placed by the CPU emitter from the tap schedule, then appended on the GPU), the drains, the taps' spawns and the step's dispatches.
     /// The live count and removal totals come back asynchronously; the particles come back into the entity buffers as
     /// <see cref="FluidSettings.Readback"/> says, never stalling the frame. Runs only while a fluid has a compute shader.
     /// </summary>
@@ -83,7 +83,7 @@ namespace SoftBodyDynamics
                 reason = "no compute shader is assigned";
             else
                 FluidBackendChoice.UseGpu(settings.Backend, SystemInfo.supportsComputeShaders, SystemInfo.supportsAsyncGPUReadback,
-                    SystemInfo.maxComputeWorkGroupSize, out reason);
+                    SystemInfo.maxComputeWorkGroupSize, SystemInfo.maxComputeBufferInputsCompute, out reason);
             if (reason != null)
             {
                 m_Declined.Add(fluid);
@@ -126,6 +126,8 @@ namespace SoftBodyDynamics
             var drains = new NativeArray<FluidDrain>(inputs.Drains.Length, Allocator.Temp);
             int drainCount = FluidSystemFrame.DrainsOf(fluid, inputs.Drains, drains);
             solver.SetShapes(inputs.Colliders.Reinterpret<ColliderShape>(), drains.GetSubArray(0, drainCount));
+            // As on the CPU (FluidFrame.DrainAndEmit): drains mark first, then the taps spawn, then the step.
+            solver.Drain();
             FluidFrameReport frame = run.Spawns.Emit(m, fluid, run.Constants, ref runtime, solver, inputs.Taps, inputs.TapEntities,
                 math.max(1, settings.Budget), dt);
             frame.Step.Substeps = solver.Step(dt);

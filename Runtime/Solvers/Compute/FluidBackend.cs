@@ -16,11 +16,13 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>
         /// True when the fluid runs on the GPU: asked for (<see cref="FluidBackend.Gpu"/> or <see cref="FluidBackend.Auto"/>),
-        /// the device runs compute shaders, reads buffers back asynchronously and allows <see cref="FluidComputeLayout.ThreadGroupSize"/>
-        /// threads per group (<c>SystemInfo.maxComputeWorkGroupSize</c>; OpenGL ES 3.1 guarantees only 128). Otherwise false,
-        /// with the reason in <paramref name="reason"/> (null when the CPU was asked for).
+        /// the device runs compute shaders, reads buffers back asynchronously, allows <see cref="FluidComputeLayout.ThreadGroupSize"/>
+        /// threads per group (<c>SystemInfo.maxComputeWorkGroupSize</c>; OpenGL ES 3.1 guarantees only 128) and
+        /// <see cref="FluidComputeLayout.MaxBuffersPerKernel"/> buffers per kernel (<c>SystemInfo.maxComputeBufferInputsCompute</c>;
+        /// OpenGL ES 3.1 guarantees only 8). Otherwise false, with the reason in <paramref name="reason"/> (null when the CPU was asked for).
         /// </summary>
-        public static bool UseGpu(FluidBackend requested, bool supportsComputeShaders, bool supportsAsyncReadback, int maxWorkGroupSize, out string reason)
+        public static bool UseGpu(FluidBackend requested, bool supportsComputeShaders, bool supportsAsyncReadback, int maxWorkGroupSize,
+            int maxBuffersPerKernel, out string reason)
         {
             reason = null;
             if (requested == FluidBackend.Cpu)
@@ -31,6 +33,8 @@ namespace SoftBodyDynamics.Solvers
                 reason = "this device cannot read GPU buffers back asynchronously";
             else if (maxWorkGroupSize < FluidComputeLayout.ThreadGroupSize)
                 reason = $"this device allows {maxWorkGroupSize} threads per group, the fluid kernels use {FluidComputeLayout.ThreadGroupSize}";
+            else if (maxBuffersPerKernel < FluidComputeLayout.MaxBuffersPerKernel)
+                reason = $"this device allows {maxBuffersPerKernel} buffers per compute kernel, the fluid kernels use up to {FluidComputeLayout.MaxBuffersPerKernel}";
             return reason == null;
         }
     }

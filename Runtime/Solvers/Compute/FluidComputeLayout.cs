@@ -18,6 +18,11 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Threads per group of the particle kernels (FLUID_GROUP in FluidCommon.hlsl); the indirect arguments use it.</summary>
         public const int ThreadGroupSize = 256;
+        /// <summary>
+        /// Most structured buffers one fluid kernel binds (Forces: particles, scratch, neighbours, counters and shapes); a
+        /// test checks it against every kernel's reflection. OpenGL ES 3.1 guarantees only 8 per compute shader.
+        /// </summary>
+        public const int MaxBuffersPerKernel = 11;
         /// <summary>Elements one group of the scan handles (SCAN_BLOCK in FluidScan.hlsl).</summary>
         public const int ScanBlock = 512;
 

@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Cpu_IsNeverTheGpu()
         {
-            Assert.That(FluidBackendChoice.UseGpu(FluidBackend.Cpu, true, true, 1024, out string reason), Is.False);
+            Assert.That(FluidBackendChoice.UseGpu(FluidBackend.Cpu, true, true, 1024, 31, out string reason), Is.False);
             Assert.That(reason, Is.Null);
         }
 
@@ -16,16 +16,17 @@ namespace SoftBodyDynamics.Tests.Solvers
         [TestCase(FluidBackend.Gpu)]
         public void GpuOrAuto_TakesTheGpuWhenEverythingIsThere(FluidBackend requested)
         {
-            Assert.That(FluidBackendChoice.UseGpu(requested, true, true, 256, out string reason), Is.True);
+            Assert.That(FluidBackendChoice.UseGpu(requested, true, true, 256, FluidComputeLayout.MaxBuffersPerKernel, out string reason), Is.True);
             Assert.That(reason, Is.Null);
         }
 
-        [TestCase(false, true, 1024, "compute shaders")]
-        [TestCase(true, false, 1024, "asynchronously")]
-        [TestCase(true, true, 128, "threads per group")]
-        public void Auto_FallsBackToTheCpuAndSaysWhy(bool compute, bool readback, int maxWorkGroupSize, string because)
+        [TestCase(false, true, 1024, 31, "compute shaders")]
+        [TestCase(true, false, 1024, 31, "asynchronously")]
+        [TestCase(true, true, 128, 31, "threads per group")]
+        [TestCase(true, true, 1024, 8, "buffers per compute kernel")]
+        public void Auto_FallsBackToTheCpuAndSaysWhy(bool compute, bool readback, int maxWorkGroupSize, int maxBuffers, string because)
         {
-            Assert.That(FluidBackendChoice.UseGpu(FluidBackend.Auto, compute, readback, maxWorkGroupSize, out string reason), Is.False);
+            Assert.That(FluidBackendChoice.UseGpu(FluidBackend.Auto, compute, readback, maxWorkGroupSize, maxBuffers, out string reason), Is.False);
             Assert.That(reason, Does.Contain(because));
         }
     }

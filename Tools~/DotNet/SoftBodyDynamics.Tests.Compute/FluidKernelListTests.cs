@@ -41,6 +41,16 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         [Test]
+        public void Buffers_PerKernelAreAtMostTheLayoutBound()
+        {
+            LavapipeComputeShader shader = Lavapipe.FluidShader;
+            int most = 0;
+            for (int k = 0; k < shader.KernelCount; k++)
+                most = Math.Max(most, shader.Compiled(k).Bindings.Count(b => !b.Uniform));
+            Assert.That(most, Is.EqualTo(FluidComputeLayout.MaxBuffersPerKernel), "FluidBackendChoice checks the device against this bound");
+        }
+
+        [Test]
         public void Sources_KeepThePortableRules()
         {
             string dir = Path.GetDirectoryName(LavapipeFluidSolver.ComputePath());

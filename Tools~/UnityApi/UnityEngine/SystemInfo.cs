@@ -9,6 +9,9 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/SystemInfo-supportsAsyncGPUReadback.html
         public static bool supportsAsyncGPUReadback => throw null;
 
+        // https://docs.unity3d.com/ScriptReference/SystemInfo-maxComputeBufferInputsCompute.html
+        public static int maxComputeBufferInputsCompute => throw null;
+
         // https://docs.unity3d.com/ScriptReference/SystemInfo-maxComputeWorkGroupSize.html
         public static int maxComputeWorkGroupSize => throw null;
     }
