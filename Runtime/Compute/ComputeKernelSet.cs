@@ -46,6 +46,10 @@ namespace SoftBodyDynamics.Compute
                 m_Shader.SetBuffer(m_Kernels[k], m_BufferIds[buffer], graphicsBuffer);
         }
 
+        /// <summary>Binds <paramref name="graphicsBuffer"/> as buffer <paramref name="buffer"/> of one kernel.</summary>
+        public void Bind(int kernel, int buffer, GraphicsBuffer graphicsBuffer) =>
+            m_Shader.SetBuffer(m_Kernels[kernel], m_BufferIds[buffer], graphicsBuffer);
+
         public void SetVector(int global, float4 value) => m_Shader.SetVector(m_GlobalIds[global], new Vector4(value.x, value.y, value.z, value.w));
 
         public void SetInts(int global, int4 value)

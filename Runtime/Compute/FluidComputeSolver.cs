@@ -10,7 +10,8 @@ namespace SoftBodyDynamics.Compute
     /// <summary>
     /// A fluid on the GPU: FluidSolver.compute driven through <see cref="FluidComputeStep"/> (the recorder the lavapipe
     /// tests run). Every <see cref="FluidComputeBuffer"/> is a <see cref="GraphicsBuffer"/> created once, grown by doubling
-    /// (contents kept) and bound to every kernel by a cached property ID; group counts come from each kernel's reflected
+    /// (the live particles move into the grown buffers on the GPU: a buffer copy would need equal sizes) and bound to every
+    /// kernel by a cached property ID; group counts come from each kernel's reflected
     /// size; particle kernels are dispatched indirectly, since only the GPU knows the live count. The particle state stays
     /// on the GPU. The step's counters, the live count and the fastest speed come back through an asynchronous read-back,
     /// so the substeps of a step follow the speed read back from an earlier one (never a stall).
@@ -46,6 +47,8 @@ namespace SoftBodyDynamics.Compute
         void Allocate(int capacity)
         {
             int cells = m_Constants.Grid.CellCount;
+            var kept = new GraphicsBuffer[m_Buffers.Length];
+            bool copy = false;
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 var id = (FluidComputeBuffer)b;
@@ -54,17 +57,33 @@ namespace SoftBodyDynamics.Compute
                 if (old != null && old.count >= length)
                     continue;
                 var target = id == FluidComputeBuffer.Args ? GraphicsBuffer.Target.Structured | GraphicsBuffer.Target.IndirectArguments : GraphicsBuffer.Target.Structured;
-                var created = new GraphicsBuffer(target | GraphicsBuffer.Target.CopyDestination | GraphicsBuffer.Target.CopySource, length, FluidComputeLayout.Stride(id));
-                if (old != null)
+                m_Buffers[b] = new GraphicsBuffer(target, length, FluidComputeLayout.Stride(id));
+                if (old != null && FluidComputeLayout.HoldsState(id))
                 {
-                    Graphics.CopyBuffer(old, created);
-                    old.Release();
+                    kept[b] = old;
+                    copy = true;
                 }
-                m_Buffers[b] = created;
+                else
+                    old?.Release();
             }
             m_Capacity = capacity;
             for (int b = 0; b < m_Buffers.Length; b++)
                 m_Kernels.Bind(b, m_Buffers[b]);
+            if (!copy)
+                return;
+            // The live particles into the grown buffers: PermuteCopyBack with the old buffers bound as its Out partners.
+            int kernel = (int)FluidKernel.PermuteCopyBack;
+            for (int b = 0; b < kept.Length; b++)
+                if (kept[b] != null)
+                    m_Kernels.Bind(kernel, (int)FluidComputeLayout.OutPartner((FluidComputeBuffer)b), kept[b]);
+            m_Kernels.DispatchIndirect(kernel, m_Buffers[(int)FluidComputeBuffer.Args]);
+            for (int b = 0; b < kept.Length; b++)
+                if (kept[b] != null)
+                {
+                    int partner = (int)FluidComputeLayout.OutPartner((FluidComputeBuffer)b);
+                    m_Kernels.Bind(kernel, partner, m_Buffers[partner]);
+                    kept[b].Release();
+                }
         }
 
         /// <summary>Uploads the colliders (world space) and drains of the following steps.</summary>

@@ -59,8 +59,13 @@ namespace SoftBodyDynamics.Lavapipe
         public Span<uint> Stats => Buffer(FluidComputeBuffer.Stats).As<uint>();
         public int Count => (int)Stats[FluidComputeLayout.StatLive];
 
+        /// <summary>
+        /// Creates or grows the buffers and binds them; the live particles move into grown state buffers on the GPU, the
+        /// way FluidComputeSolver does it (PermuteCopyBack with the old buffers bound as its Out partners).
+        /// </summary>
         void Allocate(int capacity, int cells)
         {
+            var kept = new LavapipeBuffer[m_Buffers.Length];
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 var id = (FluidComputeBuffer)b;
@@ -69,9 +74,12 @@ namespace SoftBodyDynamics.Lavapipe
                 if (old != null && old.Bytes >= bytes)
                     continue;
                 var created = m_Device.CreateBuffer(bytes);
-                if (old != null)
+                if (old != null && FluidComputeLayout.HoldsState(id))
+                    kept[b] = old;
+                else if (old != null)
                 {
-                    old.As<byte>().CopyTo(created.As<byte>());
+                    // Fixed-size buffers (counters, arguments, the cell table) never grow; scratch is rewritten each substep.
+                    old.As<byte>().Slice(0, (int)Math.Min(old.Bytes, created.Bytes)).CopyTo(created.As<byte>());
                     old.Dispose();
                 }
                 m_Buffers[b] = created;
@@ -81,6 +89,25 @@ namespace SoftBodyDynamics.Lavapipe
             for (int k = 0; k < m_Kernels.Length; k++)
                 for (int b = 0; b < m_Buffers.Length; b++)
                     m_Shader.SetBuffer(m_Kernels[k], "_" + (FluidComputeBuffer)b, m_Buffers[b]);
+            int copyBack = m_Kernels[(int)FluidKernel.PermuteCopyBack];
+            bool copy = false;
+            for (int b = 0; b < kept.Length; b++)
+                if (kept[b] != null)
+                {
+                    m_Shader.SetBuffer(copyBack, "_" + FluidComputeLayout.OutPartner((FluidComputeBuffer)b), kept[b]);
+                    copy = true;
+                }
+            if (!copy)
+                return;
+            m_Shader.DispatchIndirect(copyBack, Buffer(FluidComputeBuffer.Args), 0);
+            Flush();
+            for (int b = 0; b < kept.Length; b++)
+                if (kept[b] != null)
+                {
+                    FluidComputeBuffer partner = FluidComputeLayout.OutPartner((FluidComputeBuffer)b);
+                    m_Shader.SetBuffer(copyBack, "_" + partner, m_Buffers[(int)partner]);
+                    kept[b].Dispose();
+                }
         }
 
         /// <summary>Grows every particle buffer to at least <paramref name="capacity"/> by doubling; the state is kept.</summary>

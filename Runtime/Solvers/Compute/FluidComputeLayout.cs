@@ -66,6 +66,23 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
+        /// <summary>
+        /// The buffers that hold particle state between steps (the rest is rewritten every substep, or does not depend on
+        /// the capacity): when the buffers grow, these are copied into the new ones by <see cref="FluidKernel.PermuteCopyBack"/>
+        /// with the old buffer bound as its Out partner (<see cref="OutPartner"/>), since a GPU buffer copy needs equal sizes.
+        /// </summary>
+        public static bool HoldsState(FluidComputeBuffer buffer) =>
+            buffer == FluidComputeBuffer.Positions || buffer == FluidComputeBuffer.Velocities || buffer == FluidComputeBuffer.Extras;
+
+        /// <summary>The Out buffer PermuteCopyBack reads for a state buffer.</summary>
+        public static FluidComputeBuffer OutPartner(FluidComputeBuffer buffer) => buffer switch
+        {
+            FluidComputeBuffer.Positions => FluidComputeBuffer.PositionsOut,
+            FluidComputeBuffer.Velocities => FluidComputeBuffer.VelocitiesOut,
+            FluidComputeBuffer.Extras => FluidComputeBuffer.ExtrasOut,
+            _ => buffer,
+        };
+
         /// <summary>The capacity grown by doubling from <paramref name="current"/> (≥ 1) until it holds <paramref name="wanted"/>.</summary>
         public static int GrownCapacity(int current, int wanted)
         {
