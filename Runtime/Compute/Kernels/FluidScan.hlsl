@@ -29,8 +29,10 @@ void ScanBlock(bool cells, uint block, uint local)
     GroupMemoryBarrierWithGroupSync();
     for (uint step = 1; step < SCAN_BLOCK; step <<= 1)
     {
-        uint lo = local >= step ? s_Scan[local - step] : 0;
-        uint hi = local + SCAN_THREADS >= step ? s_Scan[local + SCAN_THREADS - step] : 0;
+        // HLSL evaluates both arms of ?:, so the index stays in range on both (an out-of-range groupshared read is undefined).
+        uint upper = local + SCAN_THREADS;
+        uint lo = local >= step ? s_Scan[local >= step ? local - step : local] : 0;
+        uint hi = upper >= step ? s_Scan[upper >= step ? upper - step : upper] : 0;
         GroupMemoryBarrierWithGroupSync();
         s_Scan[local] += lo;
         s_Scan[local + SCAN_THREADS] += hi;

@@ -1,6 +1,6 @@
 // The counting sort of a substep (FluidPasses.Keys, Sort and FluidSolver.SortParticles): keys with removal, a
-// histogram whose atomic ranks are then made stable by sorting each cell's slots, the scan (FluidScan.hlsl), the
-// scatter and the permutation. Slots of dead particles get the key past every cell and so fall off the end: the
+// histogram whose atomic ranks are then made stable (StableRanks), the scan (FluidScan.hlsl), the scatter and the
+// permutation. Slots of dead particles get the key past every cell and so fall off the end: the
 // sort is also the stream compaction.
 #ifndef SBD_FLUID_SORT_INCLUDED
 #define SBD_FLUID_SORT_INCLUDED
@@ -68,25 +68,20 @@ void Scatter(uint3 id : SV_DispatchThreadID)
     _Order[_CellStart[_Keys[i]] + _Ranks[i]] = i;
 }
 
-// The atomic ranks follow no order: sorting each cell's slots ascending gives the stable counting sort's order,
-// the same bits as the CPU's (one thread per cell, insertion sort: a cell of k particles costs k² on one thread).
+// The atomic ranks follow no order: a slot's stable rank is the number of slots of its cell with a smaller index, counted
+// over the cell's entries that Scatter wrote (read only here, so no slot waits on another). Scattering again with these
+// ranks gives the stable counting sort's order, the CPU's bit for bit. A cell of k particles costs k reads per particle.
 [numthreads(FLUID_GROUP, 1, 1)]
-void SortCells(uint3 id : SV_DispatchThreadID)
+void StableRanks(uint3 id : SV_DispatchThreadID)
 {
-    uint cell = id.x;
-    if (cell > _GridDims.w) return;
-    uint begin = _CellStart[cell], end = _CellStart[cell + 1];
-    for (uint a = begin + 1; a < end; a++)
-    {
-        uint value = _Order[a];
-        uint b = a;
-        while (b > begin && _Order[b - 1] > value)
-        {
-            _Order[b] = _Order[b - 1];
-            b--;
-        }
-        _Order[b] = value;
-    }
+    uint i = id.x;
+    if (i >= LiveCount()) return;
+    uint key = _Keys[i];
+    uint begin = _CellStart[key], end = _CellStart[key + 1];
+    uint rank = 0;
+    for (uint m = begin; m < end; m++)
+        rank += _Order[m] < i ? 1 : 0;
+    _Ranks[i] = rank;
 }
 
 // The live count (slots with a cell key) and the indirect arguments of the particle kernels.

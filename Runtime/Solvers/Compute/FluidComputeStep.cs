@@ -97,7 +97,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// The counting sort (FluidPasses.Keys, Sort, and the permutation of FluidSolver.SortParticles): histogram with
-        /// ranks, multi-level scan, scatter, per-cell ordering (so the order is the CPU's stable one), the live count
+        /// atomic ranks, multi-level scan, scatter, stable ranks and a second scatter (so the order is the CPU's stable one), the live count
         /// (dead keys fall off the end: the stream compaction), then gather and copy back.
         /// </summary>
         public static void RecordSort<T>(ref T commands, int cells, bool previous) where T : IFluidComputeCommands
@@ -108,7 +108,8 @@ namespace SoftBodyDynamics.Solvers
             commands.DispatchIndirect(FluidKernel.Keys);
             RecordScan(ref commands, elements);
             commands.DispatchIndirect(FluidKernel.Scatter);
-            commands.Dispatch(FluidKernel.SortCells, cells + 1);
+            commands.DispatchIndirect(FluidKernel.StableRanks);
+            commands.DispatchIndirect(FluidKernel.Scatter);
             commands.Dispatch(FluidKernel.CommitSort, 1);
             commands.DispatchIndirect(previous ? FluidKernel.PermuteWithPrevious : FluidKernel.Permute);
             commands.DispatchIndirect(previous ? FluidKernel.PermuteCopyBackWithPrevious : FluidKernel.PermuteCopyBack);

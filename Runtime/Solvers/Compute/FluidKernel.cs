@@ -6,7 +6,7 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public enum FluidKernel : byte
     {
-        ClearStats, BeginStep, ClearCells, Keys, ScanCellBlocks, ScanSumBlocks, AddCellOffsets, AddSumOffsets, Scatter, SortCells,
+        ClearStats, BeginStep, ClearCells, Keys, ScanCellBlocks, ScanSumBlocks, AddCellOffsets, AddSumOffsets, Scatter, StableRanks,
         CommitSort, Permute, PermuteWithPrevious, PermuteCopyBack, PermuteCopyBackWithPrevious, Emit, CommitEmit,
         Density, DensityFromNeighbours, SurfaceNormals, Forces, CohesionForces, CopyAToVelocities, CopyBToVelocities,
         CopyVelocitiesToA, ViscosityAToB, ViscosityBToA, Alignment, Advect, Predict, Lambda, Correction, ApplyCorrection,
