@@ -58,6 +58,7 @@ namespace SoftBodyDynamics.Compute
                     continue;
                 var target = id == FluidComputeBuffer.Args ? GraphicsBuffer.Target.Structured | GraphicsBuffer.Target.IndirectArguments : GraphicsBuffer.Target.Structured;
                 m_Buffers[b] = new GraphicsBuffer(target, length, FluidComputeLayout.Stride(id));
+                m_Kernels.Bind(b, m_Buffers[b]); // only a (re)created buffer: SetShapes runs every frame
                 if (old != null && FluidComputeLayout.HoldsState(id))
                 {
                     kept[b] = old;
@@ -67,8 +68,6 @@ namespace SoftBodyDynamics.Compute
                     old?.Release();
             }
             m_Capacity = capacity;
-            for (int b = 0; b < m_Buffers.Length; b++)
-                m_Kernels.Bind(b, m_Buffers[b]);
             if (!copy)
                 return;
             // The live particles into the grown buffers: PermuteCopyBack with the old buffers bound as its Out partners.

@@ -83,12 +83,12 @@ namespace SoftBodyDynamics.Lavapipe
                     old.Dispose();
                 }
                 m_Buffers[b] = created;
+                // Only a (re)created buffer is bound again: SetShapes runs every frame and must not rebind everything.
+                for (int k = 0; k < m_Kernels.Length; k++)
+                    m_Shader.SetBuffer(m_Kernels[k], "_" + id, created);
             }
             m_Capacity = capacity;
             m_Cells = cells;
-            for (int k = 0; k < m_Kernels.Length; k++)
-                for (int b = 0; b < m_Buffers.Length; b++)
-                    m_Shader.SetBuffer(m_Kernels[k], "_" + (FluidComputeBuffer)b, m_Buffers[b]);
             int copyBack = m_Kernels[(int)FluidKernel.PermuteCopyBack];
             bool copy = false;
             for (int b = 0; b < kept.Length; b++)
