@@ -123,6 +123,7 @@ namespace SoftBodyDynamics.Lavapipe
             ulong* ranges = stackalloc ulong[Math.Max(n, 1)];
             if (k.GlobalSlot >= 0)
             {
+                // 256 bytes: the largest minUniformBufferOffsetAlignment Vulkan allows, so every block offset is aligned.
                 long size = (k.Compiled.GlobalBlockSize + 255) & ~255L;
                 if (m_ArenaCursor + size > m_Arena.Bytes)
                     throw new InvalidOperationException("uniform arena full: submit more often");

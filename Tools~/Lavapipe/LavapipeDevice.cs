@@ -15,7 +15,6 @@ namespace SoftBodyDynamics.Lavapipe
 
         internal IntPtr Context;
         public string DeviceName { get; }
-        public ulong UniformAlignment { get; }
 
         public LavapipeDevice()
         {
@@ -31,7 +30,6 @@ namespace SoftBodyDynamics.Lavapipe
             if (rc != 0)
                 throw new InvalidOperationException($"Vulkan device: {Marshal.PtrToStringUTF8((IntPtr)error)} (is mesa-vulkan-drivers installed?)");
             DeviceName = Marshal.PtrToStringUTF8(VkHost.vkh_device_name(Context));
-            UniformAlignment = VkHost.vkh_uniform_alignment(Context);
         }
 
         /// <summary>Buffers alive on the device (a leak check).</summary>

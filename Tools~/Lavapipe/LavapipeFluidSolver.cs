@@ -53,7 +53,6 @@ namespace SoftBodyDynamics.Lavapipe
             Allocate(math.max(capacity, 1), constants.Grid.CellCount);
         }
 
-        public LavapipeDevice Device => m_Device;
         public int Capacity => m_Capacity;
         public LavapipeBuffer Buffer(FluidComputeBuffer b) => m_Buffers[(int)b];
         public Span<uint> Stats => Buffer(FluidComputeBuffer.Stats).As<uint>();

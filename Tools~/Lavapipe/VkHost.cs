@@ -30,8 +30,6 @@ namespace SoftBodyDynamics.Lavapipe
         [DllImport(Library)] public static extern int vkh_create(out IntPtr ctx, byte* error, int errorLength);
         [DllImport(Library)] public static extern void vkh_destroy(IntPtr ctx);
         [DllImport(Library)] public static extern IntPtr vkh_device_name(IntPtr ctx);
-        [DllImport(Library)] public static extern ulong vkh_uniform_alignment(IntPtr ctx);
-        [DllImport(Library)] public static extern ulong vkh_max_storage_range(IntPtr ctx);
         [DllImport(Library)] public static extern int vkh_live_buffers(IntPtr ctx);
         [DllImport(Library)] public static extern int vkh_live_kernels(IntPtr ctx);
         [DllImport(Library)] public static extern int vkh_validation_messages(IntPtr ctx);

@@ -166,8 +166,6 @@ VKH_EXPORT int vkh_create(vkh_ctx **out, char *err, int errlen) {
 VKH_EXPORT int vkh_setenv(const char *name, const char *value) { return setenv(name, value, 1); }
 
 VKH_EXPORT const char *vkh_device_name(vkh_ctx *ctx) { return ctx->properties.deviceName; }
-VKH_EXPORT uint64_t vkh_uniform_alignment(vkh_ctx *ctx) { return ctx->properties.limits.minUniformBufferOffsetAlignment; }
-VKH_EXPORT uint64_t vkh_max_storage_range(vkh_ctx *ctx) { return ctx->properties.limits.maxStorageBufferRange; }
 VKH_EXPORT int vkh_live_buffers(vkh_ctx *ctx) { return ctx->live_buffers; }
 VKH_EXPORT int vkh_live_kernels(vkh_ctx *ctx) { return ctx->live_kernels; }
 VKH_EXPORT int vkh_validation_messages(vkh_ctx *ctx) { return ctx->validation_messages; }

@@ -20,7 +20,6 @@ namespace SoftBodyDynamics.Tests.Compute
             b.Neighbours.AsSpan().CopyTo(g.Buffer(FluidComputeBuffer.Neighbours).As<int>());
             b.CellStart.AsSpan(0, cells + 2).CopyTo(g.Buffer(FluidComputeBuffer.CellStart).As<int>());
             b.Order.AsSpan().CopyTo(g.Buffer(FluidComputeBuffer.Order).As<int>());
-            g.Stats.Slice(1).Clear();
         }
 
         /// <summary>A CPU fluid holding the GPU's state (count from the GPU's live count).</summary>
