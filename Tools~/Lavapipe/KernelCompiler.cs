@@ -48,24 +48,25 @@ namespace SoftBodyDynamics.Lavapipe
             return list;
         }
 
-        public static List<CompiledKernel> Compile(string computePath)
+        /// <summary>Compiles every kernel; <paramref name="defines"/> (NAME or NAME=value) are added to each kernel's own.</summary>
+        public static List<CompiledKernel> Compile(string computePath, params string[] defines)
         {
             string dir = Path.GetDirectoryName(Path.GetFullPath(computePath));
-            string hash = SourceHash(dir, computePath);
+            string hash = SourceHash(dir, computePath, defines);
             string cache = Path.Combine(Path.GetTempPath(), "sbd-spirv-cache", hash);
             Directory.CreateDirectory(cache);
             var kernels = Kernels(computePath);
             var result = new CompiledKernel[kernels.Count];
             System.Threading.Tasks.Parallel.For(0, kernels.Count, new System.Threading.Tasks.ParallelOptions { MaxDegreeOfParallelism = 2 }, i =>
             {
-                var (name, defines) = kernels[i];
+                var (name, own) = kernels[i];
                 string spv = Path.Combine(cache, name + ".spv"), json = Path.Combine(cache, name + ".json");
                 if (!File.Exists(spv) || !File.Exists(json))
                 {
                     string tmp = spv + "." + Guid.NewGuid().ToString("N");
                     var args = new List<string> { "-D", "-V", "-S", "comp", "-e", name, "--amb", "--target-env", "vulkan1.1", "--quiet",
                         "-DCI_GLSLANG=1", "-I" + dir, "-o", tmp };
-                    args.AddRange(defines.Select(d => "-D" + d));
+                    args.AddRange(own.Concat(defines).Select(d => "-D" + d));
                     args.Add(computePath);
                     string output = Run("glslangValidator", args, out int rc);
                     if (rc != 0 || output.Contains("ERROR") || output.Contains("Entry point not found"))
@@ -117,12 +118,13 @@ namespace SoftBodyDynamics.Lavapipe
             return b.GetProperty("binding").GetInt32();
         }
 
-        static string SourceHash(string dir, string computePath)
+        static string SourceHash(string dir, string computePath, string[] defines)
         {
             using var sha = SHA256.Create();
             var sb = new StringBuilder();
             foreach (string f in Directory.GetFiles(dir, "*.hlsl", SearchOption.AllDirectories).Append(computePath).OrderBy(f => f, StringComparer.Ordinal))
                 sb.Append(Path.GetFileName(f)).Append('\n').Append(File.ReadAllText(f)).Append('\n');
+            sb.Append(string.Join(" ", defines)).Append('\n');
             sb.Append(Run("glslangValidator", new List<string> { "--version" }, out _));
             return Convert.ToHexString(sha.ComputeHash(Encoding.UTF8.GetBytes(sb.ToString()))).Substring(0, 24);
         }

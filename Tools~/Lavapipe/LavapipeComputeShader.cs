@@ -32,14 +32,15 @@ namespace SoftBodyDynamics.Lavapipe
         /// <summary>Dispatches recorded since the last submit.</summary>
         public int Recorded { get; private set; }
 
-        public LavapipeComputeShader(LavapipeDevice device, string computePath)
+        /// <summary>Compiles <paramref name="computePath"/> with <paramref name="defines"/> added to every kernel.</summary>
+        public LavapipeComputeShader(LavapipeDevice device, string computePath, params string[] defines)
         {
             m_Device = device;
             m_Arena = device.CreateBuffer(ArenaBytes);
             int* bindings = stackalloc int[64];
             int* kinds = stackalloc int[64];
             byte* error = stackalloc byte[512];
-            foreach (CompiledKernel ck in KernelCompiler.Compile(computePath))
+            foreach (CompiledKernel ck in KernelCompiler.Compile(computePath, defines))
             {
                 var k = new Kernel { Compiled = ck, Buffers = new LavapipeBuffer[ck.Bindings.Count] };
                 int n = ck.Bindings.Count;

@@ -1,0 +1,63 @@
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>The sizes the surface kernels share with the C# side (FluidSurfaceCommon.hlsl's SURFACE_* defines).</summary>
+    public static class FluidSurfaceLayout
+    {
+        /// <summary>Threads per group of the particle kernels.</summary>
+        public const int ParticleGroup = 64;
+        /// <summary>Depth pixels per tile side.</summary>
+        public const int TileSize = 16;
+        /// <summary>Threads per side of the tile and pixel kernels (8 × 8).</summary>
+        public const int TileGroup = 8;
+        /// <summary>Threads of the one-group tile scan.</summary>
+        public const int ScanGroup = 256;
+
+        public const int StatEntries = 0, StatDropped = 1, StatDrawn = 2, StatCount = 4;
+
+        /// <summary>Bytes per element of each buffer.</summary>
+        public static int Stride(FluidSurfaceBuffer b) => b switch
+        {
+            FluidSurfaceBuffer.Particles => 16,
+            FluidSurfaceBuffer.Thickness => 8,
+            _ => 4,
+        };
+
+        /// <summary>Elements of each buffer for these targets and this many particles.</summary>
+        public static int Length(FluidSurfaceBuffer b, in FluidSurfaceTargets t, int particles, int tileCapacity) => b switch
+        {
+            FluidSurfaceBuffer.Particles => math.max(particles, 1),
+            FluidSurfaceBuffer.TileCounts => t.TileCount,
+            FluidSurfaceBuffer.TileStart => t.TileCount + 1,
+            FluidSurfaceBuffer.TileEntries => math.max(tileCapacity, 1),
+            FluidSurfaceBuffer.Stats => StatCount,
+            FluidSurfaceBuffer.DepthA or FluidSurfaceBuffer.DepthB or FluidSurfaceBuffer.Normals => t.Depth.x * t.Depth.y,
+            FluidSurfaceBuffer.Thickness => t.Thickness.x * t.Thickness.y,
+            _ => 1,
+        };
+    }
+
+    /// <summary>The render targets of one camera: screen, depth (full or half), thickness (half), and the tile grid.</summary>
+    public struct FluidSurfaceTargets
+    {
+        public int2 Screen, Depth, Thickness, Tiles;
+        public int DepthDivisor;
+
+        public int TileCount => Tiles.x * Tiles.y;
+
+        public static FluidSurfaceTargets Of(in FluidSurfaceCamera camera, int depthDivisor)
+        {
+            int2 depth = camera.Size(depthDivisor);
+            const int tile = FluidSurfaceLayout.TileSize;
+            return new FluidSurfaceTargets
+            {
+                Screen = camera.Size(1),
+                Depth = depth,
+                Thickness = camera.Size(FluidSurfaceSettings.ThicknessDivisor),
+                Tiles = new int2((depth.x + tile - 1) / tile, (depth.y + tile - 1) / tile),
+                DepthDivisor = depthDivisor,
+            };
+        }
+    }
+}
