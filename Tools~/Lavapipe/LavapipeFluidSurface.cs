@@ -39,6 +39,8 @@ namespace SoftBodyDynamics.Lavapipe
 
         /// <summary>Tile entries the buffers hold; grown when a frame needs more.</summary>
         public int TileCapacity { get; private set; }
+        /// <summary>Whether a frame whose tile entries do not fit grows the list and redoes its splats (default), or keeps what fit.</summary>
+        public bool GrowTileLists { get; set; } = true;
         /// <summary>Times the tile list was grown and the frame's splats redone.</summary>
         public int Regrowths { get; private set; }
 
@@ -129,7 +131,7 @@ namespace SoftBodyDynamics.Lavapipe
                 frame.SplatMs = m_Shader.Submit();
                 frame.Stats = m_Buffers[(int)FluidSurfaceBuffer.Stats].As<uint>().ToArray();
                 int needed = (int)frame.Stats[FluidSurfaceLayout.StatEntries];
-                if (needed <= TileCapacity || attempt > 0)
+                if (needed <= TileCapacity || attempt > 0 || !GrowTileLists)
                     break;
                 // What Unity's feature does a frame later from the read-back: grow to the next power of two.
                 TileCapacity = (int)System.Numerics.BitOperations.RoundUpToPowerOf2((uint)needed);

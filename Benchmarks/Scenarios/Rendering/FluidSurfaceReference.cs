@@ -234,8 +234,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 dz.Add(Math.Abs(depth[i] - reference.Depth[i]) / radius);
                 float3 n = FluidSurfacePasses.UnpackNormal(normals[i]);
                 Vec64 m = reference.Normal[i];
-                double cos = Math.Clamp(n.x * m.x + n.y * m.y + n.z * m.z, -1.0, 1.0);
-                angles.Add(Math.Acos(cos) * 180.0 / Math.PI);
+                Vec64 u = new Vec64(n.x, n.y, n.z).Normalized;
+                double cx = u.y * m.z - u.z * m.y, cy = u.z * m.x - u.x * m.z, cz = u.x * m.y - u.y * m.x;
+                angles.Add(Math.Atan2(Math.Sqrt(cx * cx + cy * cy + cz * cz), Vec64.Dot(u, m)) * 180.0 / Math.PI);
             }
             var e = new Error { Both = dz.Count, CoverageMismatch = either == 0 ? 0 : one / (double)either };
             if (dz.Count > 0)

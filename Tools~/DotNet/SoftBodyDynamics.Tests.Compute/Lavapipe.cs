@@ -4,7 +4,7 @@ using SoftBodyDynamics.Lavapipe;
 namespace SoftBodyDynamics.Tests.Compute
 {
     /// <summary>
-    /// One lavapipe device and one compiled FluidSolver.compute for the whole run. The device runs under the Khronos
+    /// One lavapipe device, one compiled FluidSolver.compute and one fluid surface renderer (Shaders/FluidSurface.compute) for the whole run. The device runs under the Khronos
     /// validation layer (when installed) so a binding or layout mistake fails the test that made it.
     /// </summary>
     [SetUpFixture]
@@ -12,6 +12,7 @@ namespace SoftBodyDynamics.Tests.Compute
     {
         public static LavapipeDevice Device { get; private set; }
         public static LavapipeComputeShader FluidShader { get; private set; }
+        public static LavapipeFluidSurface Surface { get; private set; }
 
         [OneTimeSetUp]
         public void Start()
@@ -19,12 +20,14 @@ namespace SoftBodyDynamics.Tests.Compute
             System.Environment.SetEnvironmentVariable("VKH_VALIDATION", "1");
             Device = new LavapipeDevice();
             FluidShader = new LavapipeComputeShader(Device, LavapipeFluidSolver.ComputePath());
+            Surface = new LavapipeFluidSurface(Device);
             TestContext.Progress.WriteLine($"device: {Device.DeviceName}, validation layer: {(Device.ValidationEnabled ? "on" : "not installed")}");
         }
 
         [OneTimeTearDown]
         public void Stop()
         {
+            Surface?.Dispose();
             FluidShader?.Dispose();
             Device?.Dispose();
         }

@@ -1,0 +1,82 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+using SoftBodyDynamics.Lavapipe;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Compute
+{
+    /// <summary>The renderer's test scenes at a small size, built once, and helpers shared by the surface tests.</summary>
+    static class SurfaceScenes
+    {
+        public const int Width = 160, Height = 96;
+        static readonly Dictionary<string, FluidSurfaceScene> s_Scenes = new Dictionary<string, FluidSurfaceScene>();
+
+        public static readonly string[] Names = { "sphere", "two-blobs", "dam-break" };
+
+        public static FluidSurfaceScene Get(string name)
+        {
+            lock (s_Scenes)
+            {
+                if (!s_Scenes.TryGetValue(name, out FluidSurfaceScene scene))
+                {
+                    scene = name switch
+                    {
+                        "sphere" => FluidSurfaceScene.Sphere(Width, Height),
+                        "two-blobs" => FluidSurfaceScene.TwoBlobs(Width, Height),
+                        "dam-break" => FluidSurfaceScene.DamBreak(Width, Height),
+                        _ => throw new ArgumentException(name),
+                    };
+                    s_Scenes[name] = scene;
+                }
+                return scene;
+            }
+        }
+
+        public static LavapipeFluidSurface.Frame Render(FluidSurfaceScene scene, in FluidSurfaceSettings settings, in FluidLook look) =>
+            Lavapipe.Surface.Render(scene.Camera, settings, look, scene.Lighting, scene.Particles, scene.SceneColour, scene.SceneEyeDepth);
+
+        /// <summary>float32 unit round-off.</summary>
+        public const double Epsilon = 5.96e-8;
+
+        /// <summary>
+        /// The largest difference between two float32 evaluations (or one and the exact value) of a ray's first hit on a
+        /// sphere, from the error of each step of RaySphere: the normalised ray and b = u·c carry a few ε of the eye depth
+        /// z; h² = r² − |c − b u|² carries about 8ε r² absolutely, so h = √h² carries 4ε r²/h. With a factor 4 for the
+        /// division and the rounding of the inputs: 16ε z + 16ε r²/h.
+        /// </summary>
+        public static double HitTolerance(double z, double r, double h) => 16 * Epsilon * z + 16 * Epsilon * r * r / Math.Max(h, 1e-9);
+
+        /// <summary>Half the chord of the nearest sphere on a pixel's ray (float64), or 0 on a miss; the hit count too.</summary>
+        public static (double HalfChord, int Hits) NearestHalfChord(FluidSurfaceScene scene, float4 pinhole, int x, int y)
+        {
+            float3x3 rot = scene.Camera.Rotation;
+            float3 t = scene.Camera.Translation;
+            double ux = (x + 0.5 - pinhole.z) / pinhole.x, uy = (y + 0.5 - pinhole.w) / pinhole.y, uz = -1;
+            double len = Math.Sqrt(ux * ux + uy * uy + 1);
+            ux /= len; uy /= len; uz /= len;
+            double r2 = (double)scene.Radius * scene.Radius, best = double.MaxValue, half = 0;
+            int hits = 0;
+            foreach (float4 p in scene.Particles)
+            {
+                double cx = (double)rot.c0.x * p.x + (double)rot.c1.x * p.y + (double)rot.c2.x * p.z + t.x;
+                double cy = (double)rot.c0.y * p.x + (double)rot.c1.y * p.y + (double)rot.c2.y * p.z + t.y;
+                double cz = (double)rot.c0.z * p.x + (double)rot.c1.z * p.y + (double)rot.c2.z * p.z + t.z;
+                double b = ux * cx + uy * cy + uz * cz;
+                double ox = cx - b * ux, oy = cy - b * uy, oz = cz - b * uz;
+                double h2 = r2 - (ox * ox + oy * oy + oz * oz);
+                if (h2 <= 0 || b <= 0)
+                    continue;
+                hits++;
+                double h = Math.Sqrt(h2);
+                if (b - h < best)
+                {
+                    best = b - h;
+                    half = h;
+                }
+            }
+            return (half, hits);
+        }
+    }
+}
