@@ -14,8 +14,8 @@ export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
 dotnet build "Tools~/DotNet/SoftBodyDynamics.Runner/SoftBodyDynamics.Runner.csproj" -c Release --no-restore --verbosity quiet -nologo >/dev/null
 dotnet "Tools~/DotNet/SoftBodyDynamics.Runner/bin/Release/net10.0/SoftBodyDynamics.Runner.dll" "$@"
 
-# The GPU fluid kernels on lavapipe, pass by pass next to the C# passes (a CPU-driver timing, not a GPU one), appended
-# to the report; skipped when --filter or --method picks other suites.
+# The GPU fluid kernels on lavapipe, pass by pass next to the C# passes (a CPU-driver timing, not a GPU one), and the
+# fluid renderer's images and accuracy figure, appended to the report; skipped when --filter or --method picks other suites.
 out="Reports~/latest"; quick=""; gpu=1
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -29,4 +29,7 @@ done
 if [ "$gpu" -eq 1 ]; then
   dotnet run -c Release --no-restore --project "Tools~/DotNet/SoftBodyDynamics.LavapipeTiming/SoftBodyDynamics.LavapipeTiming.csproj" -- $quick --out "$out/lavapipe.md"
   { echo; echo "## GPU fluid kernels on lavapipe (CPU driver; not a GPU number)"; echo; cat "$out/lavapipe.md"; } >> "$out/report.md"
+  # The screen-space fluid renderer on lavapipe: scenes, looks, passes (PNG) and its accuracy against cost.
+  dotnet run -c Release --no-restore --project "Tools~/DotNet/SoftBodyDynamics.FluidSurfaceRender/SoftBodyDynamics.FluidSurfaceRender.csproj" -- $quick --out "$out"
+  { echo; echo "## Screen-space fluid renderer on lavapipe"; echo; cat "$out/surface.md"; } >> "$out/report.md"
 fi

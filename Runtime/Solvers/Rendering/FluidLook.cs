@@ -32,7 +32,10 @@ namespace SoftBodyDynamics.Solvers
         public float Scattering;
         /// <summary>Index of refraction (1–3): sets the Fresnel reflectance at normal incidence, F0 = ((n − 1)/(n + 1))².</summary>
         public float IndexOfRefraction;
-        /// <summary>Refraction offset of the background per metre of thickness along the normal (dimensionless).</summary>
+        /// <summary>
+        /// Refraction: the background shifts by this times the thickness times the normal's screen tilt (dimensionless;
+        /// a slab refracts by about 1 − 1/n, so 0.25 for water). 0 turns refraction off.
+        /// </summary>
         public float Refraction;
         /// <summary>Blinn–Phong exponent of the light's highlight (1–4096).</summary>
         public float SpecularPower;
@@ -60,7 +63,7 @@ namespace SoftBodyDynamics.Solvers
             Absorption = absorption,
             Scattering = 0f,
             IndexOfRefraction = ior,
-            Refraction = 6f,
+            Refraction = 0.25f,
             SpecularPower = 400f,
             Specular = 1.5f,
             Emission = float3.zero,
@@ -83,7 +86,7 @@ namespace SoftBodyDynamics.Solvers
                 FluidLook l = Clear(new float3(6f, 30f, 140f), 1.5f);
                 l.Colour = new float3(0.6f, 0.28f, 0.03f);
                 l.Scattering = 0.35f;
-                l.Refraction = 4f;
+                l.Refraction = 0.3f;
                 l.SpecularPower = 200f;
                 return l;
             }
@@ -97,7 +100,7 @@ namespace SoftBodyDynamics.Solvers
                 FluidLook l = Clear(new float3(70f, 12f, 80f), 1.4f);
                 l.Colour = new float3(0.18f, 0.75f, 0.08f);
                 l.Scattering = 0.75f;
-                l.Refraction = 2f;
+                l.Refraction = 0.15f;
                 l.SpecularPower = 80f;
                 return l;
             }
@@ -111,7 +114,7 @@ namespace SoftBodyDynamics.Solvers
                 FluidLook l = Clear(new float3(160f, 170f, 190f), 1.47f);
                 l.Colour = new float3(0.04f, 0.03f, 0.015f);
                 l.Scattering = 0.15f;
-                l.Refraction = 1f;
+                l.Refraction = 0.1f;
                 l.SpecularPower = 1200f;
                 l.Specular = 3f;
                 return l;
@@ -179,7 +182,7 @@ namespace SoftBodyDynamics.Solvers
             l.OutlineColour = Colour3(l.OutlineColour, 0f, 1f, "outline colour", float3.zero, sb);
             l.Scattering = Scalar(l.Scattering, 0f, 1f, "scattering", d.Scattering, sb);
             l.IndexOfRefraction = Scalar(l.IndexOfRefraction, 1f, 3f, "index of refraction", d.IndexOfRefraction, sb);
-            l.Refraction = Scalar(l.Refraction, 0f, 100f, "refraction", d.Refraction, sb);
+            l.Refraction = Scalar(l.Refraction, 0f, 10f, "refraction", d.Refraction, sb);
             l.SpecularPower = Scalar(l.SpecularPower, 1f, 4096f, "specular power", d.SpecularPower, sb);
             l.Specular = Scalar(l.Specular, 0f, 10f, "specular", d.Specular, sb);
             l.Opacity = Scalar(l.Opacity, 0f, 1f, "opacity", d.Opacity, sb);

@@ -44,13 +44,16 @@ namespace SoftBodyDynamics.Solvers
         public const int MaxIterations = 64;
         public const int MaxFilterPixelsLimit = 32;
 
-        /// <summary>Desktop defaults for particles of <paramref name="radius"/> metres: full-resolution depth, one narrow-range pass pair.</summary>
+        /// <summary>
+        /// Desktop defaults for particles of <paramref name="radius"/> metres: full-resolution depth, one narrow-range pass
+        /// pair (more pairs over-smooth: the main job's accuracy table shows the normal error rising after the first).
+        /// </summary>
         public static FluidSurfaceSettings Desktop(float radius) => new FluidSurfaceSettings
         {
             ParticleRadius = radius,
             DepthDivisor = 1,
             Filter = FluidSurfaceFilter.NarrowRange,
-            Iterations = 2,
+            Iterations = 1,
             FilterRadius = 2.5f * radius,
             MaxFilterPixels = 16,
             DepthRange = 2f * radius,
@@ -58,12 +61,11 @@ namespace SoftBodyDynamics.Solvers
             MaxRefractionPixels = 48f,
         };
 
-        /// <summary>The mobile tier: depth, thickness and smoothing at half resolution, one pass pair, a smaller filter.</summary>
+        /// <summary>The mobile tier: depth, thickness and smoothing at half resolution, a smaller largest filter radius and refraction offset.</summary>
         public static FluidSurfaceSettings Mobile(float radius)
         {
             FluidSurfaceSettings s = Desktop(radius);
             s.DepthDivisor = 2;
-            s.Iterations = 1;
             s.MaxFilterPixels = 8;
             s.MaxRefractionPixels = 32f;
             return s;
