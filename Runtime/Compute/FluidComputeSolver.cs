@@ -105,6 +105,19 @@ namespace SoftBodyDynamics.Compute
 
         FluidComputeConstants ConstantsOf(float h, float dt) => FluidComputeConstants.Of(m_Constants, h, dt, m_Colliders, m_Drains);
 
+        /// <summary>
+        /// Writes <see cref="FluidComputeBuffer.RenderParticles"/> (position and attribute of every live particle, NaN in
+        /// the other slots) for the fluid renderer; <see cref="Capacity"/> slots in all.
+        /// </summary>
+        public void PackRender()
+        {
+            var self = this;
+            FluidComputeStep.RecordPackRender(ref self, m_Capacity);
+        }
+
+        /// <summary>Particle slots of every buffer.</summary>
+        public int Capacity => m_Capacity;
+
         /// <summary>Grows every buffer to at least <paramref name="capacity"/> particles by doubling, keeping the state.</summary>
         public void EnsureCapacity(int capacity)
         {

@@ -130,6 +130,14 @@ namespace SoftBodyDynamics.Lavapipe
         public FluidComputeConstants ConstantsOf(float h, float dt) => FluidComputeConstants.Of(m_Constants, h, dt, m_Colliders, m_Drains);
 
         /// <summary>Marks the particles inside a drain (the next step's sort removes them), like <see cref="FluidDrain.Apply"/>.</summary>
+        /// <summary>FluidComputeSolver.PackRender: the renderer's float4 per slot.</summary>
+        public void PackRender()
+        {
+            var self = this;
+            FluidComputeStep.RecordPackRender(ref self, m_Capacity);
+            Flush();
+        }
+
         public void Drain()
         {
             var self = this;

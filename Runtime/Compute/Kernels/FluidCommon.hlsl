@@ -52,6 +52,7 @@ RWStructuredBuffer<float4> _VectorsB;
 RWStructuredBuffer<uint> _Stats;         // STAT_* counters; STAT_LIVE is the live particle count
 RWStructuredBuffer<uint> _Args;          // indirect dispatch arguments: ceil(live / FLUID_GROUP), 1, 1
 RWStructuredBuffer<float4> _Shapes;      // colliders, then drains: 5 float4 each (FluidColliders.hlsl)
+RWStructuredBuffer<float4> _RenderParticles; // xyz position, w attribute for the fluid renderer; NaN beyond the live ones
 
 // Constants, computed on the CPU (FluidComputeConstants.Set).
 float4 _GridOrigin;      // xyz grid origin (m), w 1 / cell size (1/m)

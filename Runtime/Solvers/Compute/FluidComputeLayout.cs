@@ -42,6 +42,7 @@ namespace SoftBodyDynamics.Solvers
                 case FluidComputeBuffer.Positions: case FluidComputeBuffer.Velocities: case FluidComputeBuffer.Previous:
                 case FluidComputeBuffer.PositionsOut: case FluidComputeBuffer.VelocitiesOut: case FluidComputeBuffer.PreviousOut:
                 case FluidComputeBuffer.VectorsA: case FluidComputeBuffer.VectorsB: case FluidComputeBuffer.Shapes:
+                case FluidComputeBuffer.RenderParticles:
                     return 16;
                 case FluidComputeBuffer.Extras: case FluidComputeBuffer.ExtrasOut:
                     return 8;

@@ -33,6 +33,17 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
+        /// Writes <see cref="FluidComputeBuffer.RenderParticles"/> for the fluid renderer: every slot up to
+        /// <paramref name="capacity"/>, the live ones as position and attribute, the rest NaN (the renderer culls them),
+        /// so the renderer needs no live count on the CPU.
+        /// </summary>
+        public static void RecordPackRender<T>(ref T commands, int capacity) where T : IFluidComputeCommands
+        {
+            commands.SetInts(FluidComputeGlobal.Counts, new int4(capacity, 0, 0, 0));
+            commands.Dispatch(FluidKernel.PackRender, capacity);
+        }
+
+        /// <summary>
         /// Marks the live particles inside a drain (<see cref="FluidDrain.Apply"/>): the next sort removes them. The drains
         /// are the shapes after the colliders in <see cref="FluidComputeBuffer.Shapes"/> (the constants' ShapeCounts).
         /// </summary>

@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Solvers
         CommitSort, Permute, PermuteWithPrevious, PermuteCopyBack, PermuteCopyBackWithPrevious, Emit, CommitEmit,
         Density, DensityFromNeighbours, SurfaceNormals, Forces, CohesionForces, CopyAToVelocities, CopyBToVelocities,
         CopyVelocitiesToA, ViscosityAToB, ViscosityBToA, Alignment, Advect, Predict, Lambda, Correction, ApplyCorrection,
-        VelocityFromPositions, Drain, Collide,
+        VelocityFromPositions, Drain, Collide, PackRender,
     }
 
     /// <summary>The structured buffers of the fluid kernels; the shader property is "_" + the name.</summary>
@@ -18,6 +18,8 @@ namespace SoftBodyDynamics.Solvers
     {
         Positions, Velocities, Extras, Previous, PositionsOut, VelocitiesOut, ExtrasOut, PreviousOut,
         Keys, Ranks, CellStart, ScanSums, Order, Densities, Pressures, Neighbours, NeighbourCounts, VectorsA, VectorsB, Stats, Args, Shapes,
+        /// <summary>float4 per slot for the fluid renderer: xyz position, w attribute; NaN beyond the live particles (<see cref="FluidKernel.PackRender"/>).</summary>
+        RenderParticles,
     }
 
     /// <summary>The constants of the fluid kernels (float4 or int4 globals); the shader property is "_" + the name.</summary>
