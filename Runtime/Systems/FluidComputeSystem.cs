@@ -132,8 +132,28 @@ namespace SoftBodyDynamics
                 math.max(1, settings.Budget), dt);
             frame.Step.Substeps = solver.Step(dt);
             runtime.LastFrame = frame;
+            if (m.HasComponent<FluidSurface>(fluid))
+                RegisterForRenderer(fluid, settings, m.GetComponentData<FluidSurface>(fluid), solver);
             ReadBack(m, fluid, settings, ref runtime, run);
             drains.Dispose();
+        }
+
+        /// <summary>
+        /// The renderer's buffer (<see cref="FluidComputeSolver.PackRender"/>: every slot, NaN beyond the live particles,
+        /// so no live count is needed on the CPU) and the fluid's domain as its bounds.
+        /// </summary>
+        static void RegisterForRenderer(Entity fluid, in FluidSettings settings, in FluidSurface surface, FluidComputeSolver solver)
+        {
+            solver.PackRender();
+            FluidRenderSource source = FluidRenderSources.Get(fluid) ?? new FluidRenderSource();
+            float3 lo = settings.Parameters.DomainMin - surface.ParticleRadius, hi = settings.Parameters.DomainMax + surface.ParticleRadius;
+            float3 centre = 0.5f * (lo + hi), size = hi - lo;
+            source.Particles = solver.Buffer(FluidComputeBuffer.RenderParticles);
+            source.Count = solver.Capacity;
+            source.WorldBounds = new Bounds(new Vector3(centre.x, centre.y, centre.z), new Vector3(size.x, size.y, size.z));
+            source.ParticleRadius = surface.ParticleRadius;
+            source.Look = surface.Look;
+            FluidRenderSources.Set(fluid, source);
         }
 
         /// <summary>
@@ -187,6 +207,7 @@ namespace SoftBodyDynamics
                     m_Gone.Add(pair.Key);
             foreach (Entity e in m_Gone)
             {
+                FluidRenderSources.Remove(e);
                 m_Runs[e].Solver.Dispose();
                 m_Runs[e].Spawns.Dispose();
                 m_Runs.Remove(e);
@@ -197,6 +218,7 @@ namespace SoftBodyDynamics
         {
             foreach (var pair in m_Runs)
             {
+                FluidRenderSources.Remove(pair.Key);
                 pair.Value.Solver.Dispose();
                 pair.Value.Spawns.Dispose();
             }

@@ -258,5 +258,11 @@ namespace SoftBodyDynamics.Solvers
         FluidGpuNeedsPackedStorage = 235,
         /// <summary>The GPU read-back interval is below one frame.</summary>
         FluidReadbackIntervalInvalid = 236,
+        /// <summary>The fluid surface has no fluid to draw, or its sphere radius (in particle spacings) is not positive and finite.</summary>
+        FluidSurfaceInvalid = 237,
+        /// <summary>Warning: a value of the fluid surface's custom look was out of range and replaced.</summary>
+        FluidSurfaceLookReplaced = 238,
+        /// <summary>Warning: the sphere radius leaves gaps between neighbouring particles (below 0.5 spacing) or blurs the fluid (above 2).</summary>
+        FluidSurfaceRadiusUnusual = 239,
     }
 }

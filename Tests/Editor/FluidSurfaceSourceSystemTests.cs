@@ -1,0 +1,134 @@
+using NUnit.Framework;
+using SoftBodyDynamics.Solvers;
+using Unity.Core;
+using Unity.Entities;
+using Unity.Mathematics;
+using UnityEngine;
+
+namespace SoftBodyDynamics.Tests.Editor
+{
+    /// <summary>
+    /// The renderer's sources: a CPU fluid with a <see cref="FluidSurface"/> is uploaded with its live count, look and
+    /// sphere bounds; a fluid without one is not; a destroyed fluid's source goes away.
+    /// </summary>
+    public class FluidSurfaceSourceSystemTests
+    {
+        const float k_Dt = 1f / 60f;
+
+        World m_World;
+        EntityManager m_Manager;
+        SystemHandle m_Simulation;
+        FluidSurfaceSourceSystem m_Sources;
+        double m_ElapsedTime;
+
+        [SetUp]
+        public void SetUp()
+        {
+            m_World = new World("Fluid surface source tests");
+            m_Manager = m_World.EntityManager;
+            m_Simulation = m_World.CreateSystem<FluidSimulationSystem>();
+            m_Sources = m_World.GetOrCreateSystemManaged<FluidSurfaceSourceSystem>();
+            m_ElapsedTime = 0.0;
+        }
+
+        [TearDown]
+        public void TearDown()
+        {
+            m_Manager.CompleteAllTrackedJobs();
+            m_World.Dispose();
+        }
+
+        Entity CreateFluid(bool surface)
+        {
+            FluidParameters p = FluidParameters.Default;
+            p.DomainMin = new float3(-0.2f, 0f, -0.2f);
+            p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
+            Entity entity = FluidTestEntities.Create(m_Manager, new FluidSettings
+            {
+                Parameters = p, Budget = 2000, Color = new float4(1f), Storage = FluidStorage.Packed, Backend = FluidBackend.Cpu,
+            });
+            if (surface)
+                m_Manager.AddComponentData(entity, new FluidSurface { Look = FluidLook.Honey, ParticleRadius = 0.7f * p.ParticleSpacing });
+            FluidTapSettings s = FluidTapSettings.Default;
+            s.Position = new float3(0f, 0.3f, 0f);
+            s.Rotation = quaternion.AxisAngle(new float3(1f, 0f, 0f), math.PI / 2f);
+            s.Rate = 300f;
+            Entity tap = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(tap, new FluidTap { Settings = s, Fluid = entity });
+            return entity;
+        }
+
+        void Update(int frames)
+        {
+            for (int f = 0; f < frames; f++)
+            {
+                m_ElapsedTime += k_Dt;
+                m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_Simulation.Update(m_World.Unmanaged);
+                m_Manager.CompleteAllTrackedJobs();
+                m_Sources.Update();
+            }
+        }
+
+        [Test]
+        public void FluidWithSurface_IsUploadedWithItsLiveCountLookAndBounds()
+        {
+            Entity fluid = CreateFluid(surface: true);
+            Update(20);
+            FluidRenderSource source = FluidRenderSources.Get(fluid);
+            Assert.That(source, Is.Not.Null);
+            int live = m_Manager.GetComponentData<FluidRuntime>(fluid).Status.Count;
+            Assert.That(live, Is.GreaterThan(0));
+            Assert.That(source.Count, Is.EqualTo(live));
+            Assert.That(source.Particles.count, Is.GreaterThanOrEqualTo(live));
+            Assert.That(source.Look.Model, Is.EqualTo(FluidLook.Honey.Model));
+            Assert.That(source.Look.Colour.x, Is.EqualTo(FluidLook.Honey.Colour.x));
+            DynamicBuffer<FluidPosition> positions = m_Manager.GetBuffer<FluidPosition>(fluid);
+            for (int i = 0; i < live; i++)
+            {
+                float3 p = positions[i].Value;
+                Assert.That(source.WorldBounds.Contains(new Vector3(p.x, p.y, p.z)), $"particle {i} outside the bounds");
+            }
+        }
+
+        [Test]
+        public void FluidWithoutSurface_IsNotUploaded()
+        {
+            Entity fluid = CreateFluid(surface: false);
+            Update(5);
+            Assert.That(FluidRenderSources.Get(fluid), Is.Null);
+        }
+
+        [Test]
+        public void DestroyedFluid_LeavesTheSources()
+        {
+            Entity fluid = CreateFluid(surface: true);
+            Entity other = CreateFluid(surface: true);
+            Update(3);
+            Assert.That(FluidRenderSources.Get(fluid), Is.Not.Null);
+            m_Manager.DestroyEntity(fluid);
+            Update(1);
+            Assert.That(FluidRenderSources.Get(fluid), Is.Null);
+            Assert.That(FluidRenderSources.Get(other), Is.Not.Null, "the other fluid keeps being drawn");
+        }
+
+        [Test]
+        public void Pack_BoundsCoverTheSpheresAndSkipNonFinitePositions()
+        {
+            var positions = new Unity.Collections.NativeArray<FluidPosition>(3, Unity.Collections.Allocator.Temp);
+            var attributes = new Unity.Collections.NativeArray<FluidAttribute>(3, Unity.Collections.Allocator.Temp);
+            positions[0] = new FluidPosition { Value = new float3(0f, 0f, 0f) };
+            positions[1] = new FluidPosition { Value = new float3(1f, 2f, 3f) };
+            positions[2] = new FluidPosition { Value = new float3(float.NaN, 0f, 0f) };
+            attributes[1] = new FluidAttribute { Value = 1200f };
+            var packed = new Unity.Collections.NativeArray<float4>(3, Unity.Collections.Allocator.Temp);
+            Bounds b = FluidSurfaceSourceSystem.Pack(positions, attributes, 3, 0.1f, packed);
+            Assert.That(b.Contains(new Vector3(-0.09f, -0.09f, -0.09f)) && b.Contains(new Vector3(1.09f, 2.09f, 3.09f)));
+            Assert.That(packed[1].w, Is.EqualTo(1200f));
+            Assert.That(FluidSurfaceSourceSystem.GrownLength(65), Is.EqualTo(128));
+            positions.Dispose();
+            attributes.Dispose();
+            packed.Dispose();
+        }
+    }
+}
