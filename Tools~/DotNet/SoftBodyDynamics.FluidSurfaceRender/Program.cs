@@ -17,6 +17,8 @@ using Unity.Mathematics;
 // counted bytes per pixel). Lavapipe runs the kernels on this machine's CPU: its milliseconds rank the settings, they
 // are not GPU times.
 //   dotnet run -c Release --project Tools~/DotNet/SoftBodyDynamics.FluidSurfaceRender [-- --quick] [--out DIR] [--gallery DIR]
+// --gallery DIR also writes each look alone (fluid-look-NAME.png) and the scenes, passes and accuracy figures
+// (fluid-surface-*.png) there: the documentation's images (Documentation~/images).
 static class Program
 {
     static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
@@ -143,6 +145,10 @@ static class Program
             md.AppendLine($"![accuracy against cost]({plot})").AppendLine();
         else
             md.AppendLine("*Figure skipped: gnuplot not found.*").AppendLine();
+        if (gallery != null)
+            foreach (string name in new[] { "surface-scenes.png", "surface-passes.png", "surface-accuracy.png" })
+                if (File.Exists(Path.Combine(outDir, name)))
+                    File.Copy(Path.Combine(outDir, name), Path.Combine(gallery, "fluid-" + name), true);
         md.AppendLine($"*Written in {clock.Elapsed.TotalSeconds.ToString("0", Inv)} s.*");
         File.WriteAllText(Path.Combine(outDir, "surface.md"), md.ToString());
         Console.WriteLine(md.ToString());
