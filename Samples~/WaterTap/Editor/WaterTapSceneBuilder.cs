@@ -66,6 +66,9 @@ namespace SoftBodyDynamics.Samples.WaterTap
             fluid.speedOfSound = 10f;
             fluid.storage = FluidStorage.Entities;
             fluid.particlePrefab = prefab.GetComponent<MetaballParticleAuthoring>();
+            // Drawn as a liquid surface by the Fluid Renderer Feature, where the URP renderer has it.
+            FluidSurfaceAuthoring surface = fluidObject.AddComponent<FluidSurfaceAuthoring>();
+            surface.look = FluidLookPreset.Water;
 
             var tapObject = new GameObject("Tap");
             SceneManager.MoveGameObjectToScene(tapObject, sub);
