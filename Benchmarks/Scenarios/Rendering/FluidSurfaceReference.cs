@@ -33,8 +33,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             public Vec64 Normalized => (1.0 / Length) * this;
         }
 
-        /// <summary>Particle centres in view space (float64, from the float32 world positions through the float64 view transform).</summary>
-        static Vec64[] ViewCentres(FluidSurfaceScene scene)
+        static readonly System.Runtime.CompilerServices.ConditionalWeakTable<FluidSurfaceScene, Vec64[]> s_Centres =
+            new System.Runtime.CompilerServices.ConditionalWeakTable<FluidSurfaceScene, Vec64[]>();
+
+        /// <summary>Particle centres in view space (float64, from the float32 world positions through the float64 view transform), computed once per scene (a scene is not changed after it is built).</summary>
+        static Vec64[] ViewCentres(FluidSurfaceScene scene) => s_Centres.GetValue(scene, ComputeViewCentres);
+
+        static Vec64[] ComputeViewCentres(FluidSurfaceScene scene)
         {
             float3x3 r = scene.Camera.Rotation;
             float3 t = scene.Camera.Translation;
@@ -53,6 +58,41 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         static Vec64 Ray(float4 pinhole, int x, int y) =>
             new Vec64((x + 0.5 - pinhole.z) / pinhole.x, (y + 0.5 - pinhole.w) / pinhole.y, -1.0).Normalized;
 
+        /// <summary>The unit ray u meets the sphere (centre c, radius² r2) in front of the eye: b the distance to the closest approach, h the half chord.</summary>
+        static bool Meets(Vec64 u, Vec64 c, double r2, out double b, out double h)
+        {
+            b = Vec64.Dot(u, c);
+            Vec64 off = c - b * u;
+            double h2 = r2 - Vec64.Dot(off, off);
+            h = h2 > 0 ? Math.Sqrt(h2) : 0;
+            return h2 > 0 && b > 0;
+        }
+
+        /// <summary>
+        /// The spheres on the ray of pixel (x, y) of a target with this pinhole: the half chord of the nearest one (0 on a
+        /// miss), how many the ray meets and their summed chords (m).
+        /// </summary>
+        public static (double NearestHalfChord, int Hits, double Chords) PixelHits(FluidSurfaceScene scene, float4 pinhole, int x, int y)
+        {
+            Vec64[] c = ViewCentres(scene);
+            Vec64 u = Ray(pinhole, x, y);
+            double r2 = (double)scene.Radius * scene.Radius, best = double.MaxValue, half = 0, chords = 0;
+            int hits = 0;
+            foreach (Vec64 ci in c)
+            {
+                if (!Meets(u, ci, r2, out double b, out double h))
+                    continue;
+                hits++;
+                chords += 2 * h;
+                if (b - h < best)
+                {
+                    best = b - h;
+                    half = h;
+                }
+            }
+            return (half, hits, chords);
+        }
+
         /// <summary>The union of the spheres seen through each pixel of the target <paramref name="divisor"/> times coarser than the screen.</summary>
         public static Surface UnionOfSpheres(FluidSurfaceScene scene, int divisor)
         {
@@ -70,12 +110,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     int hit = -1;
                     for (int i = 0; i < c.Length; i++)
                     {
-                        double b = Vec64.Dot(u, c[i]);
-                        Vec64 off = c[i] - b * u;
-                        double h2 = r2 - Vec64.Dot(off, off);
-                        if (h2 <= 0 || b <= 0)
+                        if (!Meets(u, c[i], r2, out double b, out double h))
                             continue;
-                        double t = b - Math.Sqrt(h2);
+                        double t = b - h;
                         if (t < best)
                         {
                             best = t;
@@ -97,24 +134,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             int2 size = scene.Camera.Size(divisor);
             float4 pin = scene.Camera.Pinhole(divisor);
-            Vec64[] c = ViewCentres(scene);
-            double r2 = (double)scene.Radius * scene.Radius;
             var t = new double[size.x * size.y];
             for (int y = 0; y < size.y; y++)
                 for (int x = 0; x < size.x; x++)
-                {
-                    Vec64 u = Ray(pin, x, y);
-                    double sum = 0;
-                    foreach (Vec64 ci in c)
-                    {
-                        double b = Vec64.Dot(u, ci);
-                        Vec64 off = ci - b * u;
-                        double h2 = r2 - Vec64.Dot(off, off);
-                        if (h2 > 0 && b > 0)
-                            sum += 2 * Math.Sqrt(h2);
-                    }
-                    t[y * size.x + x] = sum;
-                }
+                    t[y * size.x + x] = PixelHits(scene, pin, x, y).Chords;
             return t;
         }
 
@@ -137,12 +160,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     double enter = double.MaxValue, exit = 0;
                     for (int i = 0; i < c.Length; i++)
                     {
-                        double b = Vec64.Dot(u, c[i]);
-                        Vec64 off = c[i] - b * u;
-                        double h2 = support2 - Vec64.Dot(off, off);
-                        if (h2 <= 0 || b <= 0)
+                        if (!Meets(u, c[i], support2, out double b, out double h))
                             continue;
-                        double h = Math.Sqrt(h2);
                         candidates.Add(i);
                         enter = Math.Min(enter, b - h);
                         exit = Math.Max(exit, b + h);

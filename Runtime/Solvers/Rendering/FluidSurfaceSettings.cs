@@ -98,28 +98,10 @@ namespace SoftBodyDynamics.Solvers
                 sb.Append($"unknown filter {(int)s.Filter}: narrow-range used. ");
                 s.Filter = FluidSurfaceFilter.NarrowRange;
             }
-            if (s.Iterations < 0 || s.Iterations > MaxIterations)
-            {
-                int clamped = math.clamp(s.Iterations, 0, MaxIterations);
-                sb.Append($"{s.Iterations} filter iterations is outside 0–{MaxIterations}: {clamped} used. ");
-                s.Iterations = clamped;
-            }
-            if (!(s.FilterRadius > 0f) || !math.isfinite(s.FilterRadius))
-            {
-                sb.Append($"filter radius {s.FilterRadius} m must be positive: {d.FilterRadius} m used. ");
-                s.FilterRadius = d.FilterRadius;
-            }
-            if (s.MaxFilterPixels < 1 || s.MaxFilterPixels > MaxFilterPixelsLimit)
-            {
-                int clamped = math.clamp(s.MaxFilterPixels, 1, MaxFilterPixelsLimit);
-                sb.Append($"largest filter radius {s.MaxFilterPixels} px is outside 1–{MaxFilterPixelsLimit}: {clamped} used. ");
-                s.MaxFilterPixels = clamped;
-            }
-            if (!(s.DepthRange > 0f) || !math.isfinite(s.DepthRange))
-            {
-                sb.Append($"depth range {s.DepthRange} m must be positive: {d.DepthRange} m used. ");
-                s.DepthRange = d.DepthRange;
-            }
+            s.Iterations = IntIn(s.Iterations, 0, MaxIterations, "filter iterations", sb);
+            s.FilterRadius = Positive(s.FilterRadius, d.FilterRadius, "filter radius (m)", sb);
+            s.MaxFilterPixels = IntIn(s.MaxFilterPixels, 1, MaxFilterPixelsLimit, "largest filter radius (px)", sb);
+            s.DepthRange = Positive(s.DepthRange, d.DepthRange, "depth range (m)", sb);
             if (!(s.CurvatureStep > 0f) || s.CurvatureStep > 0.25f)
             {
                 sb.Append($"curvature step {s.CurvatureStep} must be in (0, 0.25] (stability): {d.CurvatureStep} used. ");
@@ -132,6 +114,23 @@ namespace SoftBodyDynamics.Solvers
             }
             problems = sb.ToString().TrimEnd();
             return s;
+        }
+
+        static int IntIn(int v, int lo, int hi, string name, System.Text.StringBuilder sb)
+        {
+            if (v >= lo && v <= hi)
+                return v;
+            int clamped = math.clamp(v, lo, hi);
+            sb.Append($"{name} {v} is outside {lo}–{hi}: {clamped} used. ");
+            return clamped;
+        }
+
+        static float Positive(float v, float fallback, string name, System.Text.StringBuilder sb)
+        {
+            if (v > 0f && math.isfinite(v))
+                return v;
+            sb.Append($"{name} {v} must be positive and finite: {fallback} used. ");
+            return fallback;
         }
     }
 }

@@ -51,32 +51,8 @@ namespace SoftBodyDynamics.Tests.Compute
         /// <summary>Half the chord of the nearest sphere on a pixel's ray (float64), or 0 on a miss; the hit count too.</summary>
         public static (double HalfChord, int Hits) NearestHalfChord(FluidSurfaceScene scene, float4 pinhole, int x, int y)
         {
-            float3x3 rot = scene.Camera.Rotation;
-            float3 t = scene.Camera.Translation;
-            double ux = (x + 0.5 - pinhole.z) / pinhole.x, uy = (y + 0.5 - pinhole.w) / pinhole.y, uz = -1;
-            double len = Math.Sqrt(ux * ux + uy * uy + 1);
-            ux /= len; uy /= len; uz /= len;
-            double r2 = (double)scene.Radius * scene.Radius, best = double.MaxValue, half = 0;
-            int hits = 0;
-            foreach (float4 p in scene.Particles)
-            {
-                double cx = (double)rot.c0.x * p.x + (double)rot.c1.x * p.y + (double)rot.c2.x * p.z + t.x;
-                double cy = (double)rot.c0.y * p.x + (double)rot.c1.y * p.y + (double)rot.c2.y * p.z + t.y;
-                double cz = (double)rot.c0.z * p.x + (double)rot.c1.z * p.y + (double)rot.c2.z * p.z + t.z;
-                double b = ux * cx + uy * cy + uz * cz;
-                double ox = cx - b * ux, oy = cy - b * uy, oz = cz - b * uz;
-                double h2 = r2 - (ox * ox + oy * oy + oz * oz);
-                if (h2 <= 0 || b <= 0)
-                    continue;
-                hits++;
-                double h = Math.Sqrt(h2);
-                if (b - h < best)
-                {
-                    best = b - h;
-                    half = h;
-                }
-            }
-            return (half, hits);
+            var hits = FluidSurfaceReference.PixelHits(scene, pinhole, x, y);
+            return (hits.NearestHalfChord, hits.Hits);
         }
     }
 }
