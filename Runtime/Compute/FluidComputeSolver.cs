@@ -115,9 +115,6 @@ namespace SoftBodyDynamics.Compute
             FluidComputeStep.RecordPackRender(ref self, m_Capacity);
         }
 
-        /// <summary>Particle slots of every buffer.</summary>
-        public int Capacity => m_Capacity;
-
         /// <summary>Grows every buffer to at least <paramref name="capacity"/> particles by doubling, keeping the state.</summary>
         public void EnsureCapacity(int capacity)
         {

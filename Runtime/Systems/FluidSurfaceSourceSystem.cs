@@ -24,7 +24,7 @@ namespace SoftBodyDynamics
         protected override void OnCreate()
         {
             RequireForUpdate<FluidSurface>();
-            m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime, FluidSurface, FluidPosition, FluidAttribute>().WithNone<FluidOnGpu>().Build();
+            m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime, FluidSurface>().WithAll<FluidPosition, FluidAttribute>().WithNone<FluidOnGpu>().Build();
         }
 
         protected override void OnUpdate()

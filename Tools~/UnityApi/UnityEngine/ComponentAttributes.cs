@@ -22,4 +22,12 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/HelpURLAttribute-ctor.html
         public HelpURLAttribute(string url) => throw null;
     }
+
+    // https://docs.unity3d.com/ScriptReference/RequireComponent.html
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
+    public sealed class RequireComponent : Attribute
+    {
+        // https://docs.unity3d.com/ScriptReference/RequireComponent-ctor.html
+        public RequireComponent(Type requiredComponent) => throw null;
+    }
 }

@@ -7,6 +7,8 @@ namespace UnityEngine
         public LightType type { get => throw null; set => throw null; }
         // https://docs.unity3d.com/ScriptReference/Light-intensity.html
         public float intensity { get => throw null; set => throw null; }
+        // https://docs.unity3d.com/ScriptReference/Light-color.html (checked: UnityCsReference 6000.0.78f1 Runtime/Export/Graphics/GraphicsComponents.bindings.cs)
+        public Color color { get => throw null; set => throw null; }
         // https://docs.unity3d.com/ScriptReference/Light-shadows.html
         public LightShadows shadows { get => throw null; set => throw null; }
     }

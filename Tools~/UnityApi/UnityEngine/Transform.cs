@@ -13,5 +13,7 @@ namespace UnityEngine
         public Vector3 localScale { get => throw null; set => throw null; }
         // https://docs.unity3d.com/ScriptReference/Transform-localToWorldMatrix.html
         public Matrix4x4 localToWorldMatrix => throw null;
+        // https://docs.unity3d.com/ScriptReference/Transform-forward.html (checked: UnityCsReference 6000.0.78f1 Runtime/Transform/ScriptBindings/Transform.bindings.cs)
+        public Vector3 forward { get => throw null; set => throw null; }
     }
 }

@@ -1,0 +1,40 @@
+// Source: Unity-Technologies/Graphics, Packages/com.unity.render-pipelines.core/Runtime/CommandBuffers/ComputeCommandBuffer.cs
+// and RasterCommandBuffer.cs (generated wrappers over UnityEngine.Rendering.CommandBuffer, public since SRP Core 16).
+namespace UnityEngine.Rendering
+{
+    // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.BaseCommandBuffer.html
+    public class BaseCommandBuffer
+    {
+        internal BaseCommandBuffer() => throw null;
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.RasterCommandBuffer.html
+    // (created by the render graph for a raster pass; users never construct one)
+    public class RasterCommandBuffer : BaseCommandBuffer
+    {
+        internal RasterCommandBuffer() => throw null;
+    }
+
+    // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html
+    // (created by the render graph for a compute pass; users never construct one)
+    public class ComputeCommandBuffer : BaseCommandBuffer
+    {
+        internal ComputeCommandBuffer() => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeVectorParam_UnityEngine_ComputeShader_System_Int32_UnityEngine_Vector4_
+        public void SetComputeVectorParam(ComputeShader computeShader, int nameID, Vector4 val) => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeIntParams_UnityEngine_ComputeShader_System_Int32_System_Int32___
+        public void SetComputeIntParams(ComputeShader computeShader, int nameID, params int[] values) => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeBufferParam_UnityEngine_ComputeShader_System_Int32_System_Int32_UnityEngine_GraphicsBuffer_
+        public void SetComputeBufferParam(ComputeShader computeShader, int kernelIndex, int nameID, GraphicsBuffer buffer) => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeTextureParam_UnityEngine_ComputeShader_System_Int32_System_Int32_UnityEngine_Rendering_RenderGraphModule_TextureHandle_
+        // (the handle must be declared on the pass with UseTexture; the wrapper validates it)
+        public void SetComputeTextureParam(ComputeShader computeShader, int kernelIndex, int nameID, RenderGraphModule.TextureHandle rt) => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_DispatchCompute_UnityEngine_ComputeShader_System_Int32_System_Int32_System_Int32_System_Int32_
+        public void DispatchCompute(ComputeShader computeShader, int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) => throw null;
+    }
+}
