@@ -172,47 +172,49 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>A copy with every unusable value replaced (non-finite, negative, out of range); <paramref name="problems"/> names each.</summary>
         public FluidLook Sanitized(out string problems)
         {
-            var sb = new System.Text.StringBuilder();
+            System.Text.StringBuilder sb = null; // allocated only when something is replaced
             FluidLook l = this;
             FluidLook d = Water;
-            if (!Enum.IsDefined(typeof(FluidLookModel), l.Model)) { sb.Append($"unknown look model {(int)l.Model}: lit used. "); l.Model = FluidLookModel.Lit; }
-            l.Colour = Colour3(l.Colour, 0f, 1f, "colour", d.Colour, sb);
-            l.Absorption = Colour3(l.Absorption, 0f, 1e5f, "absorption (1/m)", d.Absorption, sb);
-            l.Emission = Colour3(l.Emission, 0f, 1e4f, "emission", float3.zero, sb);
-            l.OutlineColour = Colour3(l.OutlineColour, 0f, 1f, "outline colour", float3.zero, sb);
-            l.Scattering = Scalar(l.Scattering, 0f, 1f, "scattering", d.Scattering, sb);
-            l.IndexOfRefraction = Scalar(l.IndexOfRefraction, 1f, 3f, "index of refraction", d.IndexOfRefraction, sb);
-            l.Refraction = Scalar(l.Refraction, 0f, 10f, "refraction", d.Refraction, sb);
-            l.SpecularPower = Scalar(l.SpecularPower, 1f, 4096f, "specular power", d.SpecularPower, sb);
-            l.Specular = Scalar(l.Specular, 0f, 10f, "specular", d.Specular, sb);
-            l.Opacity = Scalar(l.Opacity, 0f, 1f, "opacity", d.Opacity, sb);
-            l.Outline = Scalar(l.Outline, 0f, 1f, "outline", d.Outline, sb);
-            if (l.Bands < 1 || l.Bands > 8) { sb.Append($"{l.Bands} toon bands is outside 1–8: 3 used. "); l.Bands = 3; }
+            if (!Enum.IsDefined(typeof(FluidLookModel), l.Model)) { Note(ref sb).Append($"unknown look model {(int)l.Model}: lit used. "); l.Model = FluidLookModel.Lit; }
+            l.Colour = Colour3(l.Colour, 0f, 1f, "colour", d.Colour, ref sb);
+            l.Absorption = Colour3(l.Absorption, 0f, 1e5f, "absorption (1/m)", d.Absorption, ref sb);
+            l.Emission = Colour3(l.Emission, 0f, 1e4f, "emission", float3.zero, ref sb);
+            l.OutlineColour = Colour3(l.OutlineColour, 0f, 1f, "outline colour", float3.zero, ref sb);
+            l.Scattering = Scalar(l.Scattering, 0f, 1f, "scattering", d.Scattering, ref sb);
+            l.IndexOfRefraction = Scalar(l.IndexOfRefraction, 1f, 3f, "index of refraction", d.IndexOfRefraction, ref sb);
+            l.Refraction = Scalar(l.Refraction, 0f, 10f, "refraction", d.Refraction, ref sb);
+            l.SpecularPower = Scalar(l.SpecularPower, 1f, 4096f, "specular power", d.SpecularPower, ref sb);
+            l.Specular = Scalar(l.Specular, 0f, 10f, "specular", d.Specular, ref sb);
+            l.Opacity = Scalar(l.Opacity, 0f, 1f, "opacity", d.Opacity, ref sb);
+            l.Outline = Scalar(l.Outline, 0f, 1f, "outline", d.Outline, ref sb);
+            if (l.Bands < 1 || l.Bands > 8) { Note(ref sb).Append($"{l.Bands} toon bands is outside 1–8: 3 used. "); l.Bands = 3; }
             if (!math.isfinite(l.ColdAttribute) || !math.isfinite(l.HotAttribute) || !(l.HotAttribute > l.ColdAttribute))
             {
-                sb.Append($"hot attribute {l.HotAttribute} must be finite and above the cold one {l.ColdAttribute}: emission off. ");
+                Note(ref sb).Append($"hot attribute {l.HotAttribute} must be finite and above the cold one {l.ColdAttribute}: emission off. ");
                 l.ColdAttribute = 0f;
                 l.HotAttribute = 1f;
                 l.Emission = float3.zero;
             }
-            problems = sb.ToString().TrimEnd();
+            problems = sb == null ? string.Empty : sb.ToString().TrimEnd();
             return l;
         }
 
-        static float Scalar(float v, float lo, float hi, string name, float fallback, System.Text.StringBuilder sb)
+        static float Scalar(float v, float lo, float hi, string name, float fallback, ref System.Text.StringBuilder sb)
         {
             if (math.isfinite(v) && v >= lo && v <= hi)
                 return v;
-            sb.Append($"{name} {v} is outside {lo}–{hi}: {fallback} used. ");
+            Note(ref sb).Append($"{name} {v} is outside {lo}–{hi}: {fallback} used. ");
             return fallback;
         }
 
-        static float3 Colour3(float3 v, float lo, float hi, string name, float3 fallback, System.Text.StringBuilder sb)
+        static float3 Colour3(float3 v, float lo, float hi, string name, float3 fallback, ref System.Text.StringBuilder sb)
         {
             if (math.all(math.isfinite(v)) && math.all(v >= lo) && math.all(v <= hi))
                 return v;
-            sb.Append($"{name} ({v.x}, {v.y}, {v.z}) has a value outside {lo}–{hi}: ({fallback.x}, {fallback.y}, {fallback.z}) used. ");
+            Note(ref sb).Append($"{name} ({v.x}, {v.y}, {v.z}) has a value outside {lo}–{hi}: ({fallback.x}, {fallback.y}, {fallback.z}) used. ");
             return fallback;
         }
+
+        static System.Text.StringBuilder Note(ref System.Text.StringBuilder sb) => sb ??= new System.Text.StringBuilder();
     }
 }

@@ -80,57 +80,59 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public FluidSurfaceSettings Sanitized(out string problems)
         {
-            var sb = new System.Text.StringBuilder();
+            System.Text.StringBuilder sb = null; // allocated only when something is replaced
             FluidSurfaceSettings s = this;
             if (!(s.ParticleRadius > 0f) || !math.isfinite(s.ParticleRadius))
             {
-                sb.Append($"particle radius {s.ParticleRadius} m must be positive and finite: 0.02 m used. ");
+                Note(ref sb).Append($"particle radius {s.ParticleRadius} m must be positive and finite: 0.02 m used. ");
                 s.ParticleRadius = 0.02f;
             }
             FluidSurfaceSettings d = Desktop(s.ParticleRadius);
             if (s.DepthDivisor != 1 && s.DepthDivisor != 2)
             {
-                sb.Append($"depth divisor {s.DepthDivisor} must be 1 (full) or 2 (half): 1 used. ");
+                Note(ref sb).Append($"depth divisor {s.DepthDivisor} must be 1 (full) or 2 (half): 1 used. ");
                 s.DepthDivisor = 1;
             }
             if (!Enum.IsDefined(typeof(FluidSurfaceFilter), s.Filter))
             {
-                sb.Append($"unknown filter {(int)s.Filter}: narrow-range used. ");
+                Note(ref sb).Append($"unknown filter {(int)s.Filter}: narrow-range used. ");
                 s.Filter = FluidSurfaceFilter.NarrowRange;
             }
-            s.Iterations = IntIn(s.Iterations, 0, MaxIterations, "filter iterations", sb);
-            s.FilterRadius = Positive(s.FilterRadius, d.FilterRadius, "filter radius (m)", sb);
-            s.MaxFilterPixels = IntIn(s.MaxFilterPixels, 1, MaxFilterPixelsLimit, "largest filter radius (px)", sb);
-            s.DepthRange = Positive(s.DepthRange, d.DepthRange, "depth range (m)", sb);
+            s.Iterations = IntIn(s.Iterations, 0, MaxIterations, "filter iterations", ref sb);
+            s.FilterRadius = Positive(s.FilterRadius, d.FilterRadius, "filter radius (m)", ref sb);
+            s.MaxFilterPixels = IntIn(s.MaxFilterPixels, 1, MaxFilterPixelsLimit, "largest filter radius (px)", ref sb);
+            s.DepthRange = Positive(s.DepthRange, d.DepthRange, "depth range (m)", ref sb);
             if (!(s.CurvatureStep > 0f) || s.CurvatureStep > 0.25f)
             {
-                sb.Append($"curvature step {s.CurvatureStep} must be in (0, 0.25] (stability): {d.CurvatureStep} used. ");
+                Note(ref sb).Append($"curvature step {s.CurvatureStep} must be in (0, 0.25] (stability): {d.CurvatureStep} used. ");
                 s.CurvatureStep = d.CurvatureStep;
             }
             if (!(s.MaxRefractionPixels >= 0f) || !math.isfinite(s.MaxRefractionPixels))
             {
-                sb.Append($"largest refraction offset {s.MaxRefractionPixels} px must be zero or positive: {d.MaxRefractionPixels} px used. ");
+                Note(ref sb).Append($"largest refraction offset {s.MaxRefractionPixels} px must be zero or positive: {d.MaxRefractionPixels} px used. ");
                 s.MaxRefractionPixels = d.MaxRefractionPixels;
             }
-            problems = sb.ToString().TrimEnd();
+            problems = sb == null ? string.Empty : sb.ToString().TrimEnd();
             return s;
         }
 
-        static int IntIn(int v, int lo, int hi, string name, System.Text.StringBuilder sb)
+        static int IntIn(int v, int lo, int hi, string name, ref System.Text.StringBuilder sb)
         {
             if (v >= lo && v <= hi)
                 return v;
             int clamped = math.clamp(v, lo, hi);
-            sb.Append($"{name} {v} is outside {lo}–{hi}: {clamped} used. ");
+            Note(ref sb).Append($"{name} {v} is outside {lo}–{hi}: {clamped} used. ");
             return clamped;
         }
 
-        static float Positive(float v, float fallback, string name, System.Text.StringBuilder sb)
+        static float Positive(float v, float fallback, string name, ref System.Text.StringBuilder sb)
         {
             if (v > 0f && math.isfinite(v))
                 return v;
-            sb.Append($"{name} {v} must be positive and finite: {fallback} used. ");
+            Note(ref sb).Append($"{name} {v} must be positive and finite: {fallback} used. ");
             return fallback;
         }
+
+        static System.Text.StringBuilder Note(ref System.Text.StringBuilder sb) => sb ??= new System.Text.StringBuilder();
     }
 }
