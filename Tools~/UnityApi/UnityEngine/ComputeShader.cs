@@ -15,6 +15,9 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/ComputeShader.SetBuffer.html
         public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) => throw null;
 
+        // https://docs.unity3d.com/ScriptReference/ComputeShader.SetTexture.html
+        public void SetTexture(int kernelIndex, int nameID, Texture texture) => throw null;
+
         // https://docs.unity3d.com/ScriptReference/ComputeShader.SetVector.html
         public void SetVector(int nameID, Vector4 val) => throw null;
 
