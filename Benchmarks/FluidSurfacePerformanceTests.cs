@@ -62,11 +62,13 @@ namespace SoftBodyDynamics.Benchmarks
                 Shader = shader,
                 Kernels = new int[names.Length],
                 Buffers = new GraphicsBuffer[Enum.GetValues(typeof(FluidSurfaceBuffer)).Length],
-                SlotIds = new[] { Shader.PropertyToID("_Depth"), Shader.PropertyToID("_DepthIn"), Shader.PropertyToID("_DepthOut") },
+                SlotIds = new int[FluidSurfaceLayout.DepthSlotNames.Length],
             };
             for (int k = 0; k < names.Length; k++)
                 commands.Kernels[k] = shader.FindKernel(names[k]);
-            string[] bufferNames = { "_Particles", "_TileCounts", "_TileStart", "_TileEntries", "_SurfaceStats", null, null, "_Thickness", "_Normals" };
+            for (int s = 0; s < commands.SlotIds.Length; s++)
+                commands.SlotIds[s] = Shader.PropertyToID(FluidSurfaceLayout.DepthSlotNames[s]);
+            string[] bufferNames = FluidSurfaceLayout.BufferNames;
             for (int b = 0; b < commands.Buffers.Length; b++)
             {
                 var id = (FluidSurfaceBuffer)b;

@@ -6,20 +6,11 @@ namespace SoftBodyDynamics.Rendering
     /// <summary>Shader property IDs of Shaders/FluidSurface.compute, looked up once.</summary>
     static class FluidShaderIds
     {
-        /// <summary>
-        /// Buffer name of each <see cref="FluidSurfaceBuffer"/> (FluidSurfaceCommon.hlsl); DepthA and DepthB have none, the
-        /// recorder binds them to the depth slots.
-        /// </summary>
-        static readonly string[] k_BufferNames =
-        {
-            "_Particles", "_TileCounts", "_TileStart", "_TileEntries", "_SurfaceStats", null, null, "_Thickness", "_Normals",
-        };
-
-        /// <summary>Property ID per <see cref="FluidSurfaceBuffer"/>; −1 for the two depth buffers.</summary>
-        public static readonly int[] Buffers = Ids(k_BufferNames);
+        /// <summary>Property ID per <see cref="FluidSurfaceBuffer"/> (<see cref="FluidSurfaceLayout.BufferNames"/>); −1 for the two depth buffers.</summary>
+        public static readonly int[] Buffers = Ids(FluidSurfaceLayout.BufferNames);
 
         /// <summary>Property ID per <see cref="FluidSurfaceDepthSlot"/>.</summary>
-        public static readonly int[] DepthSlots = Ids(new[] { "_Depth", "_DepthIn", "_DepthOut" });
+        public static readonly int[] DepthSlots = Ids(FluidSurfaceLayout.DepthSlotNames);
 
         /// <summary>Property ID per global of <see cref="FluidSurfaceConstants.Names"/>.</summary>
         public static readonly int[] Globals = Ids(FluidSurfaceConstants.Names);

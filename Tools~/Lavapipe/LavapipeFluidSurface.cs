@@ -61,22 +61,10 @@ namespace SoftBodyDynamics.Lavapipe
         public static string ComputePath() =>
             Path.Combine(Path.GetDirectoryName(Path.GetDirectoryName(Path.GetDirectoryName(LavapipeFluidSolver.ComputePath()))), "Shaders", "FluidSurface.compute");
 
-        static string SlotName(FluidSurfaceDepthSlot slot) => slot switch
-        {
-            FluidSurfaceDepthSlot.Depth => "_Depth",
-            FluidSurfaceDepthSlot.DepthIn => "_DepthIn",
-            _ => "_DepthOut",
-        };
-
         public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) =>
-            m_Shader.SetBuffer(m_Kernels[(int)kernel], SlotName(slot), m_Buffers[(int)buffer]);
+            m_Shader.SetBuffer(m_Kernels[(int)kernel], FluidSurfaceLayout.DepthSlotNames[(int)slot], m_Buffers[(int)buffer]);
 
         public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY) => m_Shader.Dispatch(m_Kernels[(int)kernel], groupsX, groupsY);
-
-        static readonly string[] BufferNames =
-        {
-            "_Particles", "_TileCounts", "_TileStart", "_TileEntries", "_SurfaceStats", null, null, "_Thickness", "_Normals",
-        };
 
         void Allocate(in FluidSurfaceTargets t, int particles, int screenPixels)
         {
@@ -91,9 +79,9 @@ namespace SoftBodyDynamics.Lavapipe
             m_FluidColour = m_Device.CreateBuffer(16L * screenPixels);
             foreach (int k in m_Kernels)
             {
-                for (int b = 0; b < BufferNames.Length; b++)
-                    if (BufferNames[b] != null)
-                        m_Shader.SetBuffer(k, BufferNames[b], m_Buffers[b]);
+                for (int b = 0; b < FluidSurfaceLayout.BufferNames.Length; b++)
+                    if (FluidSurfaceLayout.BufferNames[b] != null)
+                        m_Shader.SetBuffer(k, FluidSurfaceLayout.BufferNames[b], m_Buffers[b]);
                 m_Shader.SetBuffer(k, "_SceneColor", m_SceneColour);
                 m_Shader.SetBuffer(k, "_SceneEyeDepth", m_SceneDepth);
                 m_Shader.SetBuffer(k, "_FluidColor", m_FluidColour);

@@ -16,6 +16,19 @@ namespace SoftBodyDynamics.Solvers
 
         public const int StatEntries = 0, StatDropped = 1, StatDrawn = 2, StatCount = 4;
 
+        /// <summary>
+        /// The shader name of each <see cref="FluidSurfaceBuffer"/> (FluidSurfaceCommon.hlsl), bound by name to every
+        /// kernel; null for <see cref="FluidSurfaceBuffer.DepthA"/> and <see cref="FluidSurfaceBuffer.DepthB"/>, which the
+        /// recorder binds to the depth slots (<see cref="DepthSlotNames"/>).
+        /// </summary>
+        public static readonly string[] BufferNames =
+        {
+            "_Particles", "_TileCounts", "_TileStart", "_TileEntries", "_SurfaceStats", null, null, "_Thickness", "_Normals",
+        };
+
+        /// <summary>The shader name of each <see cref="FluidSurfaceDepthSlot"/>.</summary>
+        public static readonly string[] DepthSlotNames = { "_Depth", "_DepthIn", "_DepthOut" };
+
         /// <summary>Bytes per element of each buffer.</summary>
         public static int Stride(FluidSurfaceBuffer b) => b switch
         {

@@ -56,6 +56,18 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         [Test]
+        public void SurfaceBufferNames_AreTheKernelsBindings()
+        {
+            LavapipeComputeShader shader = Lavapipe.Surface.Shader;
+            var bound = Enumerable.Range(0, shader.KernelCount).SelectMany(k => shader.Compiled(k).Bindings).Where(b => !b.Uniform)
+                .Select(b => b.Name).Distinct().OrderBy(n => n).ToArray();
+            // The buffer build's screen I/O (SBD_SCREEN_BUFFERS) adds the scene and fluid colour buffers.
+            var named = FluidSurfaceLayout.BufferNames.Where(n => n != null).Concat(FluidSurfaceLayout.DepthSlotNames)
+                .Concat(new[] { "_SceneColor", "_SceneEyeDepth", "_FluidColor" }).OrderBy(n => n).ToArray();
+            Assert.That(bound, Is.EqualTo(named));
+        }
+
+        [Test]
         public void SurfaceThreadGroups_AreTheLayoutSizes()
         {
             LavapipeComputeShader shader = Lavapipe.Surface.Shader;
