@@ -5,11 +5,11 @@ namespace SoftBodyDynamics.Rendering
     {
         /// <summary>Full-resolution depth, filter up to 16 px, refraction up to 48 px (<c>FluidSurfaceSettings.Desktop</c>).</summary>
         Desktop = 0,
-        /// <summary>Half-resolution depth, filter up to 8 px, refraction up to 32 px (<c>FluidSurfaceSettings.Mobile</c>).</summary>
+        /// <summary>Half-resolution depth and composite, filter up to 8 px, refraction up to 32 px (<c>FluidSurfaceSettings.Mobile</c>).</summary>
         Mobile = 1,
     }
 
-    /// <summary>Resolution of the fluid's depth, smoothing and normals; the value is the divisor of the screen size.</summary>
+    /// <summary>Resolution of the fluid's depth, smoothing and normals, or of its composite; the value is the divisor of the screen size.</summary>
     public enum FluidDepthResolution
     {
         Full = 1,

@@ -32,11 +32,14 @@ namespace SoftBodyDynamics.Rendering
         public Shader overlayShader;
 
         [Header("Quality")]
-        [Tooltip("Desktop: full-resolution depth, filter up to 16 px, refraction up to 48 px. Mobile: half-resolution depth (a quarter of the pixels), filter up to 8 px, refraction up to 32 px. Both: one narrow-range pass pair. Changing it resets the fields below to the tier's defaults.")]
+        [Tooltip("Desktop: full-resolution depth and composite, filter up to 16 px, refraction up to 48 px. Mobile: half-resolution depth and composite (a quarter of the pixels), filter up to 8 px, refraction up to 32 px. Both: one narrow-range pass pair. Changing it resets the fields below to the tier's defaults.")]
         public FluidRendererTier tier = FluidRendererTier.Desktop;
 
         [Tooltip("Resolution of the fluid depth, its smoothing and its normals. Half costs a quarter of the pixels and softens the silhouette. Thickness is always at half resolution. Desktop: Full.")]
         public FluidDepthResolution depthResolution = (FluidDepthResolution)k_Desktop.DepthDivisor;
+
+        [Tooltip("Resolution of the composite (refraction, absorption, reflection, the look). Half shades a quarter of the pixels and the overlay upsamples them bilinearly: softer edges, about half the memory traffic of the mobile tier. Desktop: Full.")]
+        public FluidDepthResolution compositeResolution = (FluidDepthResolution)k_Desktop.CompositeDivisor;
 
         [Tooltip("How the depth of the particle spheres is smoothed into a surface. Narrow-range (default): keeps separate sheets apart. Bilateral: classic, softer. Curvature flow: iterative mean-curvature smoothing. None: raw spheres.")]
         public FluidSurfaceFilter filter = k_Desktop.Filter;
@@ -92,6 +95,7 @@ namespace SoftBodyDynamics.Rendering
             {
                 ParticleRadius = particleRadius,
                 DepthDivisor = (int)depthResolution,
+                CompositeDivisor = (int)compositeResolution,
                 Filter = filter,
                 Iterations = iterations,
                 FilterRadius = filterRadius * particleRadius,
@@ -108,6 +112,7 @@ namespace SoftBodyDynamics.Rendering
         {
             FluidSurfaceSettings d = tier == FluidRendererTier.Mobile ? FluidSurfaceSettings.Mobile(1f) : FluidSurfaceSettings.Desktop(1f);
             depthResolution = (FluidDepthResolution)d.DepthDivisor;
+            compositeResolution = (FluidDepthResolution)d.CompositeDivisor;
             filter = d.Filter;
             iterations = d.Iterations;
             filterRadius = d.FilterRadius;
@@ -128,6 +133,8 @@ namespace SoftBodyDynamics.Rendering
                 ApplyTierDefaults();
             if (!Enum.IsDefined(typeof(FluidDepthResolution), depthResolution))
                 depthResolution = (FluidDepthResolution)k_Desktop.DepthDivisor;
+            if (!Enum.IsDefined(typeof(FluidDepthResolution), compositeResolution))
+                compositeResolution = (FluidDepthResolution)k_Desktop.CompositeDivisor;
             if (!Enum.IsDefined(typeof(FluidSurfaceFilter), filter))
                 filter = k_Desktop.Filter;
             iterations = math.clamp(iterations, 0, FluidSurfaceSettings.MaxIterations);

@@ -13,7 +13,8 @@ namespace SoftBodyDynamics.Rendering
     /// <summary>
     /// Draws every registered fluid in view of a camera, per fluid: one compute pass "Fluid Surface" that runs
     /// Shaders/FluidSurface.compute (tile lists, splats, smoothing, normals, composite; the list of
-    /// <see cref="FluidSurfaceFrame"/>) into a screen-sized half-float colour texture with coverage in alpha, then one
+    /// <see cref="FluidSurfaceFrame"/>) into a half-float colour texture (screen-sized, or half of it each way in the
+    /// mobile tier) with coverage in alpha, then one
     /// raster pass "Fluid Overlay" that blends that texture over the camera colour (Shaders/FluidOverlay.shader).
     /// The composite refracts and depth-tests against the camera's opaque colour and depth textures, so it runs after
     /// the skybox, before transparents. Render graph only: URP's Compatibility Mode (render graph off) is not supported,
@@ -45,7 +46,7 @@ namespace SoftBodyDynamics.Rendering
         }
 
         static readonly int k_BufferCount = Enum.GetValues(typeof(FluidSurfaceBuffer)).Length;
-        // The fluid colour covers the target 1:1: no scale, no offset.
+        // The fluid colour covers the whole target (1:1, or half resolution sampled bilinearly): no scale, no offset.
         static readonly Vector4 k_ScaleBias = new Vector4(1f, 1f, 0f, 0f);
 
         // Per fluid, by its source object (the systems keep one per fluid for the fluid's lifetime).
@@ -155,14 +156,15 @@ namespace SoftBodyDynamics.Rendering
             FluidLook look = source.Look.Sanitized(out string lookProblems);
             ReportProblems(source, settingsProblems, lookProblems);
 
-            FluidSurfaceTargets targets = FluidSurfaceTargets.Of(frame.Camera, settings.DepthDivisor);
+            FluidSurfaceTargets targets = FluidSurfaceTargets.Of(frame.Camera, settings);
             FluidSurfaceResources buffers = ResourcesFor(source);
             buffers.Ensure(targets);
             FluidSurfaceConstants constants = FluidSurfaceConstants.Of(frame.Camera, settings, look, frame.Lighting, source.Count,
                 buffers.TileCapacity, frame.SceneDepthParams, flipY: SystemInfo.graphicsUVStartsAtTop);
 
-            // rgb fluid colour (linear, HDR), a coverage 0 or 1: premultiplied, written to every pixel by the composite.
-            var colorDesc = new TextureDesc(targets.Screen.x, targets.Screen.y)
+            // rgb fluid colour (linear, HDR), a coverage 0 or 1: premultiplied, written to every pixel by the composite; at
+            // the composite's resolution (the screen's, or half of it each way, upsampled by the overlay).
+            var colorDesc = new TextureDesc(targets.Composite.x, targets.Composite.y)
             {
                 colorFormat = GraphicsFormat.R16G16B16A16_SFloat,
                 enableRandomWrite = true,

@@ -41,7 +41,7 @@ float4 _ScreenPinhole;   // the same of the full-resolution screen
 uint4 _DepthSize;        // x width, y height (depth pixels), z tiles x, w tiles y
 uint4 _OtherSizes;       // x, y thickness target; z, w screen
 uint4 _SurfaceCounts;    // x particles, y tile-entry capacity, z thickness pixels per thread side in a tile (1 or 2), w unused
-uint4 _Composite;        // x depth divisor (1 full, 2 half), y look model (FluidLookModel), z 1 when texture row 0 is the top, w unused
+uint4 _Composite;        // x depth divisor (1 full, 2 half), y look model (FluidLookModel), z 1 when texture row 0 is the top, w composite divisor
 float4 _SceneDepthParams; // Unity's _ZBufferParams of the camera depth texture: eye depth = 1 / (z·d + w)
 float4 _Splat;           // particle radius r (m), r², near plane (m), thickness quantum (m per unit)
 float4 _AttributeRange;  // x cold attribute, y 1/(hot − cold), zw unused
@@ -112,6 +112,9 @@ float3 UnpackNormal(uint packed)
     n.y += n.y >= 0.0 ? -t : t;
     return normalize(n);
 }
+
+// Composite pixels: the screen divided by the composite divisor, rounded up (FluidSurfaceComposite.Size).
+uint2 CompositeSize() { return (_OtherSizes.zw + _Composite.w - 1u) / _Composite.w; }
 
 uint DepthIndex(int2 p) { return (uint)p.y * _DepthSize.x + (uint)p.x; }
 bool InDepth(int2 p) { return p.x >= 0 && p.y >= 0 && p.x < (int)_DepthSize.x && p.y < (int)_DepthSize.y; }

@@ -20,11 +20,12 @@ float3 SceneColorBilinear(float2 x)
 
 #include "FluidSurfaceShading.hlsl"
 
-// Thickness (m) and mean attribute at a screen pixel: bilinear over the half-resolution texels that hold fluid, the
-// weights renormalised so the empty background does not thin the edge; the particle radius where none does.
-float2 ThicknessAt(int2 s)
+// Thickness (m) and mean attribute at a screen position (pixel centres at i + 0.5): bilinear over the half-resolution
+// texels that hold fluid, the weights renormalised so the empty background does not thin the edge; the particle radius
+// where none does.
+float2 ThicknessAt(float2 pixel)
 {
-    float2 t = (float2(s) + 0.5) / 2.0 - 0.5;
+    float2 t = pixel / 2.0 - 0.5;
     int2 i = (int2)floor(t);
     float2 f = t - floor(t);
     float2 sum = 0.0;
@@ -44,29 +45,33 @@ float2 ThicknessAt(int2 s)
     return weights > 0.0 ? sum / weights : float2(_Splat.x, 0.0);
 }
 
+// One thread per composite pixel c: every screen pixel, or every other one each way at half resolution (its centre at
+// (c + ½)·divisor on the screen; the overlay upsamples).
 [numthreads(SURFACE_TILE_GROUP, SURFACE_TILE_GROUP, 1)]
 void Composite(uint3 id : SV_DispatchThreadID)
 {
-    int2 s = (int2)id.xy;
-    if (s.x >= (int)_OtherSizes.z || s.y >= (int)_OtherSizes.w)
+    int2 c = (int2)id.xy;
+    if (any(id.xy >= CompositeSize()))
         return;
-    int2 d = min(s / (int)_Composite.x, (int2)_DepthSize.xy - 1);
+    float2 pixel = (float2(c) + 0.5) * (float)_Composite.w;
+    int2 s = min((int2)floor(pixel), (int2)_OtherSizes.zw - 1);
+    int2 d = min((int2)floor(pixel / (float)_Composite.x), (int2)_DepthSize.xy - 1);
     float z = _Depth[DepthIndex(d)];
     float sceneDepth = LoadSceneEyeDepth(s);
     if (z <= 0.0 || z >= sceneDepth)
     {
-        StoreFluidColor(s, float4(0.0, 0.0, 0.0, 0.0));
+        StoreFluidColor(c, float4(0.0, 0.0, 0.0, 0.0));
         return;
     }
     SurfacePixel px;
-    px.pixel = float2(s) + 0.5;
+    px.pixel = pixel;
     px.eyeDepth = z;
     px.normal = UnpackNormal(_Normals[DepthIndex(d)]);
     px.view = -normalize(PixelRay(px.pixel, _ScreenPinhole));
-    float2 thickness = ThicknessAt(s);
+    float2 thickness = ThicknessAt(pixel);
     px.thickness = thickness.x;
     px.heat = thickness.y;
-    StoreFluidColor(s, float4(Shade(px), 1.0));
+    StoreFluidColor(c, float4(Shade(px), 1.0));
 }
 
 #endif

@@ -23,12 +23,16 @@ namespace SoftBodyDynamics.Lavapipe
             public float[] Depth;
             public float2[] Thickness;
             public uint[] Normals;
-            /// <summary>rgb fluid colour and coverage per screen pixel.</summary>
+            /// <summary>rgb fluid colour and coverage per composite pixel (Targets.Composite: the screen, or half of it each way).</summary>
             public float4[] Colour;
             public uint[] Stats;
             /// <summary>Device milliseconds of the splats (tile lists included), the smoothing, and normals + composite.</summary>
             public double SplatMs, SmoothMs, ShadeMs;
             public double TotalMs => SplatMs + SmoothMs + ShadeMs;
+
+            /// <summary>The fluid over the scene as the overlay draws it (upsampled when the composite is at half resolution).</summary>
+            public float4[] Over(ReadOnlySpan<float4> scene) =>
+                Imaging.RenderImage.Over(Colour, Targets.Composite.x, Targets.Composite.y, scene, Targets.Screen.x, Targets.Screen.y);
         }
 
         readonly LavapipeDevice m_Device;
@@ -101,7 +105,7 @@ namespace SoftBodyDynamics.Lavapipe
         public Frame Render(in FluidSurfaceCamera camera, in FluidSurfaceSettings settings, in FluidLook look, in FluidSurfaceLighting lighting,
             ReadOnlySpan<float4> particles, ReadOnlySpan<float4> sceneColour, ReadOnlySpan<float> sceneEyeDepth)
         {
-            FluidSurfaceTargets t = FluidSurfaceTargets.Of(camera, settings.DepthDivisor);
+            FluidSurfaceTargets t = FluidSurfaceTargets.Of(camera, settings);
             int screenPixels = t.Screen.x * t.Screen.y;
             if (sceneColour.Length != screenPixels || sceneEyeDepth.Length != screenPixels)
                 throw new ArgumentException($"the scene must have {screenPixels} pixels");
@@ -133,7 +137,7 @@ namespace SoftBodyDynamics.Lavapipe
             frame.Depth = m_Buffers[(int)smoothed].As<float>().Slice(0, t.Depth.x * t.Depth.y).ToArray();
             frame.Thickness = m_Buffers[(int)FluidSurfaceBuffer.Thickness].As<float2>().Slice(0, t.Thickness.x * t.Thickness.y).ToArray();
             frame.Normals = m_Buffers[(int)FluidSurfaceBuffer.Normals].As<uint>().Slice(0, t.Depth.x * t.Depth.y).ToArray();
-            frame.Colour = m_FluidColour.As<float4>().Slice(0, screenPixels).ToArray();
+            frame.Colour = m_FluidColour.As<float4>().Slice(0, t.Composite.x * t.Composite.y).ToArray();
             return frame;
         }
 

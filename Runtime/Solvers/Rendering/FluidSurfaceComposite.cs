@@ -48,12 +48,12 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Thickness (m) and mean attribute at a screen pixel: bilinear over the half-resolution texels that hold fluid,
+        /// Thickness (m) and mean attribute at a screen position (pixel centres at i + 0.5): bilinear over the half-resolution texels that hold fluid,
         /// the weights renormalised so the empty background does not thin the edge; the particle radius where none does.
         /// </summary>
-        static float2 ThicknessAt(in FluidSurfaceConstants k, in Inputs i, int sx, int sy)
+        static float2 ThicknessAt(in FluidSurfaceConstants k, in Inputs i, float px, float py)
         {
-            float tx = (sx + 0.5f) / 2f - 0.5f, ty = (sy + 0.5f) / 2f - 0.5f;
+            float tx = px / 2f - 0.5f, ty = py / 2f - 0.5f;
             int bx = (int)math.floor(tx), by = (int)math.floor(ty);
             float fx = tx - math.floor(tx), fy = ty - math.floor(ty);
             float sumT = 0f, sumA = 0f, weights = 0f;
@@ -136,29 +136,39 @@ namespace SoftBodyDynamics.Solvers
             return math.lerp(background, colour, opacity);
         }
 
-        /// <summary>The composite: rgb fluid colour and coverage (0 or 1) per screen pixel; 0 where there is no fluid or the scene is nearer.</summary>
+        /// <summary>Composite pixels of the target (the screen divided by _Composite.w, rounded up).</summary>
+        public static int2 Size(in FluidSurfaceConstants k) =>
+            new int2((k.OtherSizes.z + k.Composite.w - 1) / k.Composite.w, (k.OtherSizes.w + k.Composite.w - 1) / k.Composite.w);
+
+        /// <summary>
+        /// The composite: rgb fluid colour and coverage (0 or 1) per composite pixel (every screen pixel, or every other one
+        /// each way at half resolution, its centre at (c + ½)·divisor on the screen); 0 where there is no fluid or the
+        /// scene is nearer.
+        /// </summary>
         public static void Composite(in FluidSurfaceConstants k, in Inputs i, Span<float4> output)
         {
-            int w = k.OtherSizes.z;
-            for (int y = 0; y < k.OtherSizes.w; y++)
-                for (int x = 0; x < w; x++)
+            int2 size = Size(k);
+            float divisor = k.Composite.w;
+            for (int y = 0; y < size.y; y++)
+                for (int x = 0; x < size.x; x++)
                 {
-                    int dx = math.min(x / k.Composite.x, k.DepthSize.x - 1), dy = math.min(y / k.Composite.x, k.DepthSize.y - 1);
+                    float px = (x + 0.5f) * divisor, py = (y + 0.5f) * divisor;
+                    int sx = math.min((int)math.floor(px), k.OtherSizes.z - 1), sy = math.min((int)math.floor(py), k.OtherSizes.w - 1);
+                    int dx = math.min((int)math.floor(px / k.Composite.x), k.DepthSize.x - 1), dy = math.min((int)math.floor(py / k.Composite.x), k.DepthSize.y - 1);
                     float z = i.Depth[dy * k.DepthSize.x + dx];
-                    float sceneDepth = SceneEyeDepth(k, i, x, y);
+                    float sceneDepth = SceneEyeDepth(k, i, sx, sy);
                     if (z <= 0f || z >= sceneDepth)
                     {
-                        output[y * w + x] = float4.zero;
+                        output[y * size.x + x] = float4.zero;
                         continue;
                     }
-                    float px = x + 0.5f, py = y + 0.5f;
                     float3 n = FluidSurfacePasses.UnpackNormal(i.Normals[dy * k.DepthSize.x + dx]);
                     float3 view = -math.normalize(FluidSurfacePasses.PixelRay(px, py, k.ScreenPinhole));
-                    float2 t = ThicknessAt(k, i, x, y);
+                    float2 t = ThicknessAt(k, i, px, py);
                     float3 c = k.Composite.y == 0
                         ? ShadeLit(k, i, px, py, z, n, view, t.x, t.y)
                         : ShadeUnlit(k, i, px, py, n, view, t.x, k.Composite.y);
-                    output[y * w + x] = new float4(c, 1f);
+                    output[y * size.x + x] = new float4(c, 1f);
                 }
         }
     }

@@ -32,7 +32,7 @@ namespace SoftBodyDynamics.Solvers
         public static FluidSurfaceConstants Of(in FluidSurfaceCamera camera, in FluidSurfaceSettings settings, in FluidLook look,
             in FluidSurfaceLighting lighting, int particles, int tileCapacity, float4 sceneDepthParams = default, bool flipY = false)
         {
-            FluidSurfaceTargets t = FluidSurfaceTargets.Of(camera, settings.DepthDivisor);
+            FluidSurfaceTargets t = FluidSurfaceTargets.Of(camera, settings);
             float3x3 rotation = camera.Rotation;
             float3x3 rows = math.transpose(rotation);
             float r = settings.ParticleRadius;
@@ -48,7 +48,7 @@ namespace SoftBodyDynamics.Solvers
                 DepthSize = new int4(t.Depth.x, t.Depth.y, t.Tiles.x, t.Tiles.y),
                 OtherSizes = new int4(t.Thickness.x, t.Thickness.y, t.Screen.x, t.Screen.y),
                 SurfaceCounts = new int4(particles, tileCapacity, threadSide, 0),
-                Composite = new int4(settings.DepthDivisor, (int)look.Model, flipY ? 1 : 0, 0),
+                Composite = new int4(settings.DepthDivisor, (int)look.Model, flipY ? 1 : 0, settings.CompositeDivisor),
                 SceneDepthParams = sceneDepthParams,
                 Splat = new float4(r, r * r, camera.Near, r / QuantaPerRadius),
                 AttributeRange = new float4(look.ColdAttribute, 1f / (look.HotAttribute - look.ColdAttribute), 0f, 0f),

@@ -1,3 +1,5 @@
+using Unity.Mathematics;
+
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>One pass's compulsory memory traffic: bytes read and written per screen pixel (each target touched once; filter taps and repeated reads are assumed to hit the cache).</summary>
@@ -11,8 +13,8 @@ namespace SoftBodyDynamics.Solvers
     /// Counted memory traffic of the surface passes per screen pixel, for the documentation's cost table and the main
     /// job's report. Formats: depth R32F (4 B), thickness RG32F (8 B), packed normal (4 B), fluid colour RGBA16F (8 B),
     /// URP's opaque colour R11G11B10F (4 B), camera depth 4 B, camera colour read and written by the overlay's blend
-    /// (4 + 4 B). A depth-resolution target costs its bytes times (1/divisor)² per screen pixel; thickness is at half
-    /// resolution (¼). Tile binning is per particle, not per pixel: <see cref="BinningBytesPerParticle"/>.
+    /// (4 + 4 B). A target at 1/k of the resolution costs its bytes times 1/k² per screen pixel: depth at 1 or ½,
+    /// thickness at ½, the composite at 1 or ½ (it reads each input at most once per composite pixel). Tile binning is per particle, not per pixel: <see cref="BinningBytesPerParticle"/>.
     /// </summary>
     public static class FluidSurfaceCost
     {
@@ -22,6 +24,7 @@ namespace SoftBodyDynamics.Solvers
         public static FluidSurfacePassCost[] Passes(in FluidSurfaceSettings settings)
         {
             double d = 1.0 / (settings.DepthDivisor * settings.DepthDivisor);
+            double c = 1.0 / (settings.CompositeDivisor * settings.CompositeDivisor);
             const double t = 1.0 / (FluidSurfaceSettings.ThicknessDivisor * FluidSurfaceSettings.ThicknessDivisor);
             int iterations = settings.Filter == FluidSurfaceFilter.None ? 0 : settings.Iterations;
             int filterPasses = settings.Filter == FluidSurfaceFilter.CurvatureFlow ? iterations : 2 * iterations;
@@ -34,9 +37,9 @@ namespace SoftBodyDynamics.Solvers
                 new FluidSurfacePassCost
                 {
                     Pass = "composite (depth, normal, thickness, scene colour and depth; write colour)",
-                    BytesPerPixel = (DepthBytes + NormalBytes) * d + ThicknessBytes * t + SceneColourBytes + SceneDepthBytes + FluidColourBytes,
+                    BytesPerPixel = (math.min(d, c) * (DepthBytes + NormalBytes) + math.min(t, c) * ThicknessBytes + c * (SceneColourBytes + SceneDepthBytes + FluidColourBytes)),
                 },
-                new FluidSurfacePassCost { Pass = "overlay (read fluid colour, blend onto the camera colour)", BytesPerPixel = FluidColourBytes + 2 * CameraColourBytes },
+                new FluidSurfacePassCost { Pass = "overlay (read fluid colour, blend onto the camera colour)", BytesPerPixel = c * FluidColourBytes + 2 * CameraColourBytes },
             };
         }
 

@@ -55,7 +55,7 @@ namespace SoftBodyDynamics.Solvers
             commands.BindDepth(FluidSurfaceKernel.Normals, FluidSurfaceDepthSlot.Depth, depth);
             commands.Dispatch(FluidSurfaceKernel.Normals, Groups(targets.Depth.x, FluidSurfaceLayout.TileGroup), Groups(targets.Depth.y, FluidSurfaceLayout.TileGroup));
             commands.BindDepth(FluidSurfaceKernel.Composite, FluidSurfaceDepthSlot.Depth, depth);
-            commands.Dispatch(FluidSurfaceKernel.Composite, Groups(targets.Screen.x, FluidSurfaceLayout.TileGroup), Groups(targets.Screen.y, FluidSurfaceLayout.TileGroup));
+            commands.Dispatch(FluidSurfaceKernel.Composite, Groups(targets.Composite.x, FluidSurfaceLayout.TileGroup), Groups(targets.Composite.y, FluidSurfaceLayout.TileGroup));
         }
 
         /// <summary>The whole frame: splats, smoothing, normals, composite.</summary>

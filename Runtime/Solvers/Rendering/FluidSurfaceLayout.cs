@@ -51,15 +51,18 @@ namespace SoftBodyDynamics.Solvers
         };
     }
 
-    /// <summary>The render targets of one camera: screen, depth (full or half), thickness (half), and the tile grid.</summary>
+    /// <summary>The render targets of one camera: screen, depth (full or half), thickness (half), composite (full or half), and the tile grid.</summary>
     public struct FluidSurfaceTargets
     {
-        public int2 Screen, Depth, Thickness, Tiles;
-        public int DepthDivisor;
+        public int2 Screen, Depth, Thickness, Composite, Tiles;
+        public int DepthDivisor, CompositeDivisor;
 
         public int TileCount => Tiles.x * Tiles.y;
 
-        public static FluidSurfaceTargets Of(in FluidSurfaceCamera camera, int depthDivisor)
+        public static FluidSurfaceTargets Of(in FluidSurfaceCamera camera, in FluidSurfaceSettings settings) =>
+            Of(camera, settings.DepthDivisor, settings.CompositeDivisor);
+
+        public static FluidSurfaceTargets Of(in FluidSurfaceCamera camera, int depthDivisor, int compositeDivisor = 1)
         {
             int2 depth = camera.Size(depthDivisor);
             const int tile = FluidSurfaceLayout.TileSize;
@@ -68,8 +71,10 @@ namespace SoftBodyDynamics.Solvers
                 Screen = camera.Size(1),
                 Depth = depth,
                 Thickness = camera.Size(FluidSurfaceSettings.ThicknessDivisor),
+                Composite = camera.Size(compositeDivisor),
                 Tiles = new int2((depth.x + tile - 1) / tile, (depth.y + tile - 1) / tile),
                 DepthDivisor = depthDivisor,
+                CompositeDivisor = compositeDivisor,
             };
         }
     }

@@ -27,6 +27,8 @@ namespace SoftBodyDynamics.Solvers
         public float ParticleRadius;
         /// <summary>1 = depth and smoothing at full resolution; 2 = half resolution (the mobile tier). Thickness is always at half resolution.</summary>
         public int DepthDivisor;
+        /// <summary>1 = the composite shades every screen pixel; 2 = every other pixel each way (the mobile tier), upsampled by the overlay.</summary>
+        public int CompositeDivisor;
         public FluidSurfaceFilter Filter;
         /// <summary>Filter iterations: pairs of separable passes (narrow-range, bilateral) or curvature-flow steps.</summary>
         public int Iterations;
@@ -52,6 +54,7 @@ namespace SoftBodyDynamics.Solvers
         {
             ParticleRadius = radius,
             DepthDivisor = 1,
+            CompositeDivisor = 1,
             Filter = FluidSurfaceFilter.NarrowRange,
             Iterations = 1,
             FilterRadius = 2.5f * radius,
@@ -61,11 +64,12 @@ namespace SoftBodyDynamics.Solvers
             MaxRefractionPixels = 48f,
         };
 
-        /// <summary>The mobile tier: depth, thickness and smoothing at half resolution, a smaller largest filter radius and refraction offset.</summary>
+        /// <summary>The mobile tier: depth, thickness, smoothing and the composite at half resolution, a smaller largest filter radius and refraction offset.</summary>
         public static FluidSurfaceSettings Mobile(float radius)
         {
             FluidSurfaceSettings s = Desktop(radius);
             s.DepthDivisor = 2;
+            s.CompositeDivisor = 2;
             s.MaxFilterPixels = 8;
             s.MaxRefractionPixels = 32f;
             return s;
@@ -92,6 +96,11 @@ namespace SoftBodyDynamics.Solvers
             {
                 Note(ref sb).Append($"depth divisor {s.DepthDivisor} must be 1 (full) or 2 (half): 1 used. ");
                 s.DepthDivisor = 1;
+            }
+            if (s.CompositeDivisor != 1 && s.CompositeDivisor != 2)
+            {
+                Note(ref sb).Append($"composite divisor {s.CompositeDivisor} must be 1 (full) or 2 (half): 1 used. ");
+                s.CompositeDivisor = 1;
             }
             if (!Enum.IsDefined(typeof(FluidSurfaceFilter), s.Filter))
             {

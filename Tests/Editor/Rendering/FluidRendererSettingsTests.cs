@@ -24,6 +24,7 @@ namespace SoftBodyDynamics.Tests.Editor.Rendering
         {
             Assert.That(actual.ParticleRadius, Is.EqualTo(expected.ParticleRadius).Within(k_Tolerance), "particle radius");
             Assert.That(actual.DepthDivisor, Is.EqualTo(expected.DepthDivisor), "depth divisor");
+            Assert.That(actual.CompositeDivisor, Is.EqualTo(expected.CompositeDivisor), "composite divisor");
             Assert.That(actual.Filter, Is.EqualTo(expected.Filter), "filter");
             Assert.That(actual.Iterations, Is.EqualTo(expected.Iterations), "iterations");
             Assert.That(actual.FilterRadius, Is.EqualTo(expected.FilterRadius).Within(k_Tolerance), "filter radius");
@@ -55,6 +56,7 @@ namespace SoftBodyDynamics.Tests.Editor.Rendering
 
             Assert.That(problems, Is.Empty);
             Assert.That(m_Settings.depthResolution, Is.EqualTo(FluidDepthResolution.Half));
+            Assert.That(m_Settings.compositeResolution, Is.EqualTo(FluidDepthResolution.Half));
             AssertQualityEqual(FluidSurfaceSettings.Mobile(0.01f), mobile);
 
             m_Settings.tier = FluidRendererTier.Desktop;

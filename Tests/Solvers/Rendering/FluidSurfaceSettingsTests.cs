@@ -15,6 +15,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(mobile, Is.Empty);
             Assert.That(FluidSurfaceSettings.Mobile(0.01f).DepthDivisor, Is.EqualTo(2));
             Assert.That(FluidSurfaceSettings.Desktop(0.01f).DepthDivisor, Is.EqualTo(1));
+            Assert.That(FluidSurfaceSettings.Mobile(0.01f).CompositeDivisor, Is.EqualTo(2));
+            Assert.That(FluidSurfaceSettings.Desktop(0.01f).CompositeDivisor, Is.EqualTo(1));
         }
 
         [Test]
@@ -23,6 +25,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FluidSurfaceSettings s = FluidSurfaceSettings.Desktop(0.01f);
             s.ParticleRadius = float.NaN;
             s.DepthDivisor = 3;
+            s.CompositeDivisor = 0;
             s.Filter = (FluidSurfaceFilter)9;
             s.Iterations = 1000;
             s.FilterRadius = -1f;
@@ -31,10 +34,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             s.CurvatureStep = 0.5f;
             s.MaxRefractionPixels = float.NaN;
             FluidSurfaceSettings t = s.Sanitized(out string problems);
-            foreach (string word in new[] { "particle radius", "depth divisor", "filter", "iterations", "filter radius", "largest filter radius", "depth range", "curvature step", "refraction" })
+            foreach (string word in new[] { "particle radius", "depth divisor", "composite divisor", "filter", "iterations", "filter radius", "largest filter radius", "depth range", "curvature step", "refraction" })
                 Assert.That(problems, Does.Contain(word));
             Assert.That(t.ParticleRadius, Is.GreaterThan(0f));
             Assert.That(t.DepthDivisor, Is.EqualTo(1));
+            Assert.That(t.CompositeDivisor, Is.EqualTo(1));
             Assert.That(t.Filter, Is.EqualTo(FluidSurfaceFilter.NarrowRange));
             Assert.That(t.Iterations, Is.EqualTo(FluidSurfaceSettings.MaxIterations));
             Assert.That(t.FilterRadius, Is.GreaterThan(0f));
@@ -87,6 +91,10 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(h[1].BytesPerPixel, Is.EqualTo(f[1].BytesPerPixel).Within(1e-12));
             Assert.That(h[2].BytesPerPixel, Is.EqualTo(f[2].BytesPerPixel / 4).Within(1e-12));
             Assert.That(FluidSurfaceCost.BytesPerPixel(half), Is.LessThan(FluidSurfaceCost.BytesPerPixel(full)));
+            // A half-resolution composite writes a quarter of the colour and the overlay reads a quarter of it; the
+            // camera colour the overlay blends onto stays at full resolution (4 + 4 bytes).
+            Assert.That(h[5].BytesPerPixel, Is.EqualTo(FluidSurfaceCost.FluidColourBytes / 4.0 + 2 * FluidSurfaceCost.CameraColourBytes).Within(1e-12));
+            Assert.That(f[5].BytesPerPixel, Is.EqualTo(FluidSurfaceCost.FluidColourBytes + 2 * FluidSurfaceCost.CameraColourBytes).Within(1e-12));
             // Each separable iteration reads and writes the depth twice: 2 × (4 + 4) bytes per depth pixel.
             FluidSurfaceSettings more = full;
             more.Iterations = 3;

@@ -189,7 +189,7 @@ static class Program
     static (byte[] Rgba, LavapipeFluidSurface.Frame Frame) Picture(LavapipeFluidSurface surface, FluidSurfaceScene scene, FluidSurfaceSettings settings, FluidLook look)
     {
         LavapipeFluidSurface.Frame f = surface.Render(scene.Camera, settings, look, scene.Lighting, scene.Particles, scene.SceneColour, scene.SceneEyeDepth);
-        return (RenderImage.ToRgba(RenderImage.Over(f.Colour, scene.SceneColour), scene.Camera.Width, scene.Camera.Height), f);
+        return (RenderImage.ToRgba(f.Over(scene.SceneColour), scene.Camera.Width, scene.Camera.Height), f);
     }
 
     static float4[] NormalColours(LavapipeFluidSurface.Frame f)

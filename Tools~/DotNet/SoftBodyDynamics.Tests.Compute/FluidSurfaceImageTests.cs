@@ -35,7 +35,7 @@ namespace SoftBodyDynamics.Tests.Compute
             FluidSurfaceScene scene = SurfaceScenes.Get(picture.Substring(0, picture.Length - look.Length - 1));
             FluidSurfaceSettings s = FluidSurfaceSettings.Desktop(scene.Radius);
             LavapipeFluidSurface.Frame f = SurfaceScenes.Render(scene, s, FluidLook.Presets.First(p => p.Name == look).Look);
-            byte[] rgba = RenderImage.ToRgba(RenderImage.Over(f.Colour, scene.SceneColour), SurfaceScenes.Width, SurfaceScenes.Height);
+            byte[] rgba = RenderImage.ToRgba(f.Over(scene.SceneColour), SurfaceScenes.Width, SurfaceScenes.Height);
             string path = Path.Combine(ReferenceFolder(), picture + ".png");
             if (Environment.GetEnvironmentVariable("SBD_UPDATE_RENDER_REFERENCES") == "1")
             {

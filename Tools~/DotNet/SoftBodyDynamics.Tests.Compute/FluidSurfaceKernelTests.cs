@@ -246,11 +246,11 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         [Test]
-        public void Composite_MatchesTheCSharpReference([Values(0, 1, 2, 3, 4, 5, 6, 7)] int preset)
+        public void Composite_MatchesTheCSharpReference([Values(0, 1, 2, 3, 4, 5, 6, 7)] int preset, [Values(1, 2)] int divisor)
         {
             FluidSurfaceScene scene = Get("two-blobs");
             var (name, look) = FluidLook.Presets[preset];
-            FluidSurfaceSettings s = Settings(scene, FluidSurfaceFilter.NarrowRange, 1);
+            FluidSurfaceSettings s = Settings(scene, FluidSurfaceFilter.NarrowRange, 1, divisor);
             LavapipeFluidSurface.Frame f = Render(scene, s, look);
             var cpu = new float4[f.Colour.Length];
             FluidSurfaceComposite.Composite(f.Constants, new FluidSurfaceComposite.Inputs(f.Depth, f.Normals, f.Thickness, scene.SceneColour, scene.SceneEyeDepth), cpu);
@@ -267,8 +267,9 @@ namespace SoftBodyDynamics.Tests.Compute
                 double worst = Math.Max(Math.Abs(d.x) / (1 + Math.Abs(cpu[i].x)), Math.Max(Math.Abs(d.y) / (1 + Math.Abs(cpu[i].y)), Math.Abs(d.z) / (1 + Math.Abs(cpu[i].z))));
                 if (worst > 1e-3 || !float.IsFinite(f.Colour[i].x + f.Colour[i].y + f.Colour[i].z)) beyond++;
             }
-            TestContext.Progress.WriteLine($"{name}: {covered} fluid pixels, {beyond} beyond the bound");
-            Assert.That(covered, Is.GreaterThan(100));
+            TestContext.Progress.WriteLine($"{name}, divisor {divisor}: {covered} fluid pixels, {beyond} beyond the bound");
+            Assert.That(f.Colour.Length, Is.EqualTo(f.Targets.Composite.x * f.Targets.Composite.y));
+            Assert.That(covered, Is.GreaterThan(100 / (divisor * divisor)));
             Assert.That(beyond, Is.LessThanOrEqualTo((int)(BranchShare * covered)));
             Lavapipe.AssertValid();
         }
@@ -321,14 +322,16 @@ namespace SoftBodyDynamics.Tests.Compute
             LavapipeFluidSurface.Frame half = Render(scene, Settings(scene, FluidSurfaceFilter.NarrowRange, 1, 2), FluidLook.Water);
             Assert.That(half.Targets.Depth.x, Is.EqualTo((Width + 1) / 2));
             Assert.That(half.Targets.Depth.y, Is.EqualTo((Height + 1) / 2));
-            // A half-resolution pixel covers 2 × 2 screen pixels, so coverage may differ only within two pixels of the
-            // full-resolution silhouette.
-            int differ = 0, edge = 0;
-            for (int y = 0; y < Height; y++)
-                for (int x = 0; x < Width; x++)
+            Assert.That(half.Targets.Composite.x, Is.EqualTo((Width + 1) / 2), "the mobile tier composites at half resolution");
+            // A half-resolution composite pixel c stands for screen pixels 2c and 2c + 1 each way and samples the depth
+            // under its centre, so its coverage may differ from the full-resolution one at 2c + 1 only within two
+            // screen pixels of the full-resolution silhouette.
+            int edge = 0, compared = 0;
+            for (int cy = 0; cy < half.Targets.Composite.y; cy++)
+                for (int cx = 0; cx < half.Targets.Composite.x; cx++)
                 {
-                    int i = y * Width + x;
-                    bool a = full.Colour[i].w > 0f;
+                    int x = Math.Min(2 * cx + 1, Width - 1), y = Math.Min(2 * cy + 1, Height - 1);
+                    bool a = full.Colour[y * Width + x].w > 0f;
                     bool nearEdge = false;
                     for (int dy = -2; dy <= 2 && !nearEdge; dy++)
                         for (int dx = -2; dx <= 2; dx++)
@@ -338,13 +341,12 @@ namespace SoftBodyDynamics.Tests.Compute
                                 nearEdge = true;
                         }
                     if (nearEdge) edge++;
-                    if (a != half.Colour[i].w > 0f)
-                    {
-                        differ++;
-                        Assert.That(nearEdge, $"coverage differs at ({x}, {y}), away from the silhouette");
-                    }
+                    compared++;
+                    if (a != half.Colour[cy * half.Targets.Composite.x + cx].w > 0f)
+                        Assert.That(nearEdge, $"coverage differs at composite pixel ({cx}, {cy}), away from the silhouette");
                 }
             Assert.That(edge, Is.GreaterThan(0));
+            Assert.That(compared, Is.EqualTo(half.Colour.Length));
         }
 
         [Test]

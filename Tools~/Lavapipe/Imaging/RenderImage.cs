@@ -6,17 +6,29 @@ namespace SoftBodyDynamics.Lavapipe.Imaging
     /// <summary>Linear-light images (row 0 at the bottom) to sRGB bytes and back, and a perceptual difference (CIE76 ΔE in L*a*b*).</summary>
     public static class RenderImage
     {
-        /// <summary>The fluid's colour over the scene by its coverage (what Unity's overlay pass does), row 0 at the bottom.</summary>
-        public static float4[] Over(ReadOnlySpan<float4> fluid, ReadOnlySpan<float4> scene)
+        /// <summary>
+        /// The fluid's colour (<paramref name="fw"/> × <paramref name="fh"/>, premultiplied by its coverage) over the scene
+        /// (<paramref name="w"/> × <paramref name="h"/>), row 0 at the bottom: what Unity's overlay pass does, sampling the
+        /// fluid bilinearly with clamping (one texel per pixel when the sizes match).
+        /// </summary>
+        public static float4[] Over(ReadOnlySpan<float4> fluid, int fw, int fh, ReadOnlySpan<float4> scene, int w, int h)
         {
             var result = new float4[scene.Length];
-            for (int i = 0; i < scene.Length; i++)
-            {
-                float a = fluid[i].w;
-                result[i] = new float4(fluid[i].xyz * a + scene[i].xyz * (1f - a), 1f);
-            }
+            for (int y = 0; y < h; y++)
+                for (int x = 0; x < w; x++)
+                {
+                    float tx = (x + 0.5f) * fw / w - 0.5f, ty = (y + 0.5f) * fh / h - 0.5f;
+                    int bx = (int)Math.Floor(tx), by = (int)Math.Floor(ty);
+                    float ax = tx - bx, ay = ty - by;
+                    float4 f = (At(fluid, fw, fh, bx, by) * (1f - ax) + At(fluid, fw, fh, bx + 1, by) * ax) * (1f - ay)
+                        + (At(fluid, fw, fh, bx, by + 1) * (1f - ax) + At(fluid, fw, fh, bx + 1, by + 1) * ax) * ay;
+                    float4 s = scene[y * w + x];
+                    result[y * w + x] = new float4(f.xyz + s.xyz * (1f - f.w), 1f);
+                }
             return result;
         }
+
+        static float4 At(ReadOnlySpan<float4> image, int w, int h, int x, int y) => image[Math.Clamp(y, 0, h - 1) * w + Math.Clamp(x, 0, w - 1)];
 
         /// <summary>sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1].</summary>
         public static byte ToSrgb(float linear)
