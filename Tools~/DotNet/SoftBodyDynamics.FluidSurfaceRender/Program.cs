@@ -82,10 +82,16 @@ static class Program
         md.AppendLine("![passes](surface-passes.png)").AppendLine();
         md.AppendLine("*One frame's passes: splatted depth (near is white), narrow-range-filtered depth (one iteration), normals (view space as colour), thickness at half resolution (white at 10 radii), the composite.*").AppendLine();
 
+        // The two tiers side by side.
+        var (mobileRgba, _) = Picture(surface, dam, FluidSurfaceSettings.Mobile(dam.Radius), FluidLook.Water);
+        Save(outDir, "surface-tiers.png", Montage(new List<byte[]> { finalRgba, mobileRgba }, w, h, 2));
+        md.AppendLine("![tiers](surface-tiers.png)").AppendLine();
+        md.AppendLine("*The dam-break frame in the desktop tier (left: depth, smoothing, normals and composite at full resolution) and the mobile tier (right: all at half resolution, the composite upsampled bilinearly by the overlay).*").AppendLine();
+
         // Cost table of the two tiers.
         md.AppendLine("### Counted memory traffic per screen pixel").AppendLine();
         FluidSurfaceSettings mobile = FluidSurfaceSettings.Mobile(dam.Radius);
-        md.AppendLine("| pass | desktop (full-resolution depth) B/px | mobile (half-resolution depth) B/px |");
+        md.AppendLine("| pass | desktop (full resolution) B/px | mobile (half-resolution depth and composite) B/px |");
         md.AppendLine("|---|---|---|");
         var dc = FluidSurfaceCost.Passes(desktop);
         var mc = FluidSurfaceCost.Passes(mobile);
@@ -146,7 +152,7 @@ static class Program
         else
             md.AppendLine("*Figure skipped: gnuplot not found.*").AppendLine();
         if (gallery != null)
-            foreach (string name in new[] { "surface-scenes.png", "surface-passes.png", "surface-accuracy.png" })
+            foreach (string name in new[] { "surface-scenes.png", "surface-passes.png", "surface-tiers.png", "surface-accuracy.png" })
                 if (File.Exists(Path.Combine(outDir, name)))
                     File.Copy(Path.Combine(outDir, name), Path.Combine(gallery, "fluid-" + name), true);
         md.AppendLine($"*Written in {clock.Elapsed.TotalSeconds.ToString("0", Inv)} s.*");
