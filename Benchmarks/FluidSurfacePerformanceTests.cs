@@ -35,6 +35,12 @@ namespace SoftBodyDynamics.Benchmarks
                 Shader.SetBuffer(Kernels[(int)kernel], SlotIds[(int)slot], Buffers[(int)buffer]);
 
             public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY) => Shader.Dispatch(Kernels[(int)kernel], groupsX, groupsY, 1);
+
+            public void SetVector(int global, float4 value) =>
+                Shader.SetVector(UnityEngine.Shader.PropertyToID(FluidSurfaceConstants.Names[global]), new Vector4(value.x, value.y, value.z, value.w));
+
+            public void SetInts(int global, int4 value) =>
+                Shader.SetInts(UnityEngine.Shader.PropertyToID(FluidSurfaceConstants.Names[global]), value.x, value.y, value.z, value.w);
         }
 
         [Test, Performance]
@@ -81,24 +87,9 @@ namespace SoftBodyDynamics.Benchmarks
             sceneColour.Create();
             sceneDepth.Create();
             fluidColour.Create();
-            var ints = new int[4];
             try
             {
-                for (int i = 0; i < FluidSurfaceConstants.Names.Length; i++)
-                {
-                    int id = Shader.PropertyToID(FluidSurfaceConstants.Names[i]);
-                    if (FluidSurfaceConstants.IsInteger(i))
-                    {
-                        int4 v = constants.Integer(i);
-                        ints[0] = v.x; ints[1] = v.y; ints[2] = v.z; ints[3] = v.w;
-                        shader.SetInts(id, ints);
-                    }
-                    else
-                    {
-                        float4 v = constants.Value(i);
-                        shader.SetVector(id, new Vector4(v.x, v.y, v.z, v.w));
-                    }
-                }
+                constants.Set(ref commands);
                 foreach (int kernel in commands.Kernels)
                     for (int b = 0; b < bufferNames.Length; b++)
                         if (bufferNames[b] != null)

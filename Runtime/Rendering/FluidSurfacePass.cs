@@ -218,26 +218,6 @@ namespace SoftBodyDynamics.Rendering
 
         static void ExecuteCompute(ComputeData d, ComputeCommandBuffer cmd)
         {
-            // Constants: float4 globals as vectors, uint4 globals as four ints.
-            for (int i = 0; i < FluidSurfaceConstants.Names.Length; i++)
-            {
-                int id = FluidShaderIds.Globals[i];
-                if (FluidSurfaceConstants.IsInteger(i))
-                {
-                    int4 v = d.Constants.Integer(i);
-                    d.Ints[0] = v.x;
-                    d.Ints[1] = v.y;
-                    d.Ints[2] = v.z;
-                    d.Ints[3] = v.w;
-                    cmd.SetComputeIntParams(d.Shader, id, d.Ints);
-                }
-                else
-                {
-                    float4 v = d.Constants.Value(i);
-                    cmd.SetComputeVectorParam(d.Shader, id, new Vector4(v.x, v.y, v.z, v.w));
-                }
-            }
-
             // Every named buffer on every kernel (a kernel ignores what it does not use), and the depth slots on a
             // default so no kernel ever runs with one unset; the recorder points them where each pass needs them.
             for (int b = 0; b < k_BufferCount; b++)
@@ -259,7 +239,8 @@ namespace SoftBodyDynamics.Rendering
             cmd.SetComputeTextureParam(d.Shader, composite, FluidShaderIds.SceneDepth, d.SceneDepth);
             cmd.SetComputeTextureParam(d.Shader, composite, FluidShaderIds.FluidColor, d.FluidColor);
 
-            var commands = new FluidSurfaceComputeCommands(cmd, d.Shader, d.Kernels, d.Resolved);
+            var commands = new FluidSurfaceComputeCommands(cmd, d.Shader, d.Kernels, d.Resolved, d.Ints);
+            d.Constants.Set(ref commands);
             FluidSurfaceFrame.Record(ref commands, d.Targets, d.Settings, d.Particles);
         }
 

@@ -146,11 +146,9 @@ namespace SoftBodyDynamics
         {
             solver.PackRender();
             FluidRenderSource source = FluidRenderSources.Get(fluid) ?? new FluidRenderSource();
-            float3 lo = settings.Parameters.DomainMin - surface.ParticleRadius, hi = settings.Parameters.DomainMax + surface.ParticleRadius;
-            float3 centre = 0.5f * (lo + hi), size = hi - lo;
             source.Particles = solver.Buffer(FluidComputeBuffer.RenderParticles);
             source.Count = solver.Capacity;
-            source.WorldBounds = new Bounds(new Vector3(centre.x, centre.y, centre.z), new Vector3(size.x, size.y, size.z));
+            source.WorldBounds = FluidRenderSource.SphereBounds(settings.Parameters.DomainMin, settings.Parameters.DomainMax, surface.ParticleRadius);
             source.ParticleRadius = surface.ParticleRadius;
             source.Look = surface.Look;
             FluidRenderSources.Set(fluid, source);

@@ -1,6 +1,7 @@
 using System.Collections.Generic;
 using SoftBodyDynamics.Solvers;
 using Unity.Entities;
+using Unity.Mathematics;
 using UnityEngine;
 
 namespace SoftBodyDynamics
@@ -17,6 +18,13 @@ namespace SoftBodyDynamics
         /// <summary>Sphere radius per particle (m).</summary>
         public float ParticleRadius;
         public FluidLook Look;
+
+        /// <summary>Bounds of spheres of <paramref name="radius"/> whose centres lie in [<paramref name="lo"/>, <paramref name="hi"/>].</summary>
+        public static Bounds SphereBounds(float3 lo, float3 hi, float radius)
+        {
+            float3 centre = 0.5f * (lo + hi), size = hi - lo + 2f * radius;
+            return new Bounds(new Vector3(centre.x, centre.y, centre.z), new Vector3(size.x, size.y, size.z));
+        }
     }
 
     /// <summary>

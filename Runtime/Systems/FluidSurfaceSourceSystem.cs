@@ -89,8 +89,7 @@ namespace SoftBodyDynamics
             }
             if (math.any(lo > hi))
                 return new Bounds(Vector3.zero, Vector3.zero);
-            float3 centre = 0.5f * (lo + hi), size = hi - lo + 2f * radius;
-            return new Bounds(new Vector3(centre.x, centre.y, centre.z), new Vector3(size.x, size.y, size.z));
+            return FluidRenderSource.SphereBounds(lo, hi, radius);
         }
 
         void ReleaseRemoved(EntityManager m)

@@ -44,21 +44,13 @@ namespace SoftBodyDynamics.Tests.Editor
 
         Entity CreateFluid(FluidBackend backend, ComputeShader shader, FluidReadback readback)
         {
-            FluidParameters p = FluidParameters.Default;
-            p.DomainMin = new float3(-0.2f, 0f, -0.2f);
-            p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
             Entity entity = FluidTestEntities.Create(m_Manager, new FluidSettings
             {
-                Parameters = p, Budget = 2000, Color = new float4(1f), Storage = FluidStorage.Packed, Backend = backend, Readback = readback,
+                Parameters = FluidTestEntities.BoxParameters(), Budget = 2000, Color = new float4(1f), Storage = FluidStorage.Packed, Backend = backend, Readback = readback,
                 ReadbackInterval = 1,
             });
             m_Manager.AddComponentData(entity, new FluidComputeShader { Shader = shader });
-            FluidTapSettings s = FluidTapSettings.Default;
-            s.Position = new float3(0f, 0.3f, 0f);
-            s.Rotation = quaternion.AxisAngle(new float3(1f, 0f, 0f), math.PI / 2f);
-            s.Rate = 300f;
-            Entity tap = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(tap, new FluidTap { Settings = s, Fluid = entity });
+            FluidTestEntities.CreateTap(m_Manager, entity, 300f);
             return entity;
         }
 

@@ -39,25 +39,13 @@ namespace SoftBodyDynamics.Tests.Editor
         /// <summary>A water fluid in a 0.4 m box above the origin, with the components the baker adds.</summary>
         Entity CreateFluid(int budget) => CreateFluid(budget, FluidStorage.Packed, Entity.Null);
 
-        Entity CreateFluid(int budget, FluidStorage storage, Entity prefab)
-        {
-            FluidParameters p = FluidParameters.Default;
-            p.DomainMin = new float3(-0.2f, 0f, -0.2f);
-            p.DomainMax = new float3(0.2f, 0.4f, 0.2f);
-            return FluidTestEntities.Create(m_Manager, new FluidSettings { Parameters = p, Budget = budget, Color = new float4(1f), Storage = storage, ParticlePrefab = prefab });
-        }
+        Entity CreateFluid(int budget, FluidStorage storage, Entity prefab) =>
+            FluidTestEntities.Create(m_Manager, new FluidSettings
+            {
+                Parameters = FluidTestEntities.BoxParameters(), Budget = budget, Color = new float4(1f), Storage = storage, ParticlePrefab = prefab,
+            });
 
-        Entity CreateTap(Entity fluid, float rate, float lifetime)
-        {
-            FluidTapSettings s = FluidTapSettings.Default;
-            s.Position = new float3(0f, 0.3f, 0f);
-            s.Rotation = quaternion.AxisAngle(new float3(1f, 0f, 0f), math.PI / 2f);
-            s.Rate = rate;
-            s.Lifetime = lifetime;
-            Entity tap = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(tap, new FluidTap { Settings = s, Fluid = fluid });
-            return tap;
-        }
+        Entity CreateTap(Entity fluid, float rate, float lifetime) => FluidTestEntities.CreateTap(m_Manager, fluid, rate, lifetime);
 
         void Update(int frames = 1)
         {

@@ -70,6 +70,10 @@ namespace SoftBodyDynamics.Lavapipe
 
         public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY) => m_Shader.Dispatch(m_Kernels[(int)kernel], groupsX, groupsY);
 
+        public void SetVector(int global, float4 value) => m_Shader.SetVector(FluidSurfaceConstants.Names[global], value);
+
+        public void SetInts(int global, int4 value) => m_Shader.SetInts(FluidSurfaceConstants.Names[global], value);
+
         void Allocate(in FluidSurfaceTargets t, int particles, int screenPixels)
         {
             DisposeBuffers();
@@ -92,12 +96,6 @@ namespace SoftBodyDynamics.Lavapipe
             }
         }
 
-        void SetConstants(in FluidSurfaceConstants c)
-        {
-            for (int i = 0; i < FluidSurfaceConstants.Names.Length; i++)
-                m_Shader.SetVector(FluidSurfaceConstants.Names[i], c.Value(i));
-        }
-
         /// <summary>
         /// Renders <paramref name="particles"/> (xyz world position, w attribute) over the scene (linear colour and eye
         /// depth per screen pixel, row 0 at the bottom) and reads every target back.
@@ -118,7 +116,7 @@ namespace SoftBodyDynamics.Lavapipe
                 sceneColour.CopyTo(m_SceneColour.As<float4>());
                 sceneEyeDepth.CopyTo(m_SceneDepth.As<float>());
                 frame.Constants = FluidSurfaceConstants.Of(camera, settings, look, lighting, particles.Length, TileCapacity);
-                SetConstants(frame.Constants);
+                frame.Constants.Set(ref self);
                 FluidSurfaceFrame.RecordSplats(ref self, t, particles.Length);
                 frame.SplatMs = m_Shader.Submit();
                 frame.Stats = m_Buffers[(int)FluidSurfaceBuffer.Stats].As<uint>().ToArray();

@@ -4,8 +4,8 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// The constants of the surface kernels (the float4 / uint4 globals of FluidSurfaceCommon.hlsl), computed on the CPU
-    /// from a camera, the settings, the look and the lighting. <see cref="Names"/> and <see cref="Value"/> list them for
-    /// whoever uploads them; <see cref="IsInteger"/> says which are uint4 (their bits ride in the float4).
+    /// from a camera, the settings, the look and the lighting, and uploaded through <see cref="Set"/>; <see cref="Names"/>
+    /// gives the shader name of each global index.
     /// </summary>
     public struct FluidSurfaceConstants
     {
@@ -87,19 +87,28 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Whether global <paramref name="i"/> is a uint4.</summary>
         public static bool IsInteger(int i) => i >= 6 && i <= 9;
 
-        /// <summary>Global <paramref name="i"/> of <see cref="Names"/>; a uint4's bits as a float4.</summary>
-        public float4 Value(int i) => i switch
+        /// <summary>Sets every global on <paramref name="commands"/>: float4s as vectors, uint4s as int4 bits.</summary>
+        public void Set<T>(ref T commands) where T : IFluidSurfaceCommands
+        {
+            for (int i = 0; i < Names.Length; i++)
+            {
+                if (IsInteger(i))
+                    commands.SetInts(i, Integer(i));
+                else
+                    commands.SetVector(i, Value(i));
+            }
+        }
+
+        /// <summary>Global <paramref name="i"/> of <see cref="Names"/> (a float4 one).</summary>
+        float4 Value(int i) => i switch
         {
             0 => ViewRow0, 1 => ViewRow1, 2 => ViewRow2, 3 => DepthPinhole, 4 => ThicknessPinhole, 5 => ScreenPinhole,
-            6 => Bits(DepthSize), 7 => Bits(OtherSizes), 8 => Bits(SurfaceCounts), 9 => Bits(Composite),
             10 => SceneDepthParams, 11 => Splat, 12 => AttributeRange, 13 => Filter,
             14 => LookColour, 15 => LookAbsorption, 16 => LookEmission, 17 => LookSurface, 18 => LookOutline,
             19 => LightDirection, 20 => LightColour, 21 => SkyZenith, 22 => SkyHorizon, _ => ViewUp,
         };
 
-        static float4 Bits(int4 v) => new float4(math.asfloat(v.x), math.asfloat(v.y), math.asfloat(v.z), math.asfloat(v.w));
-
         /// <summary>Global <paramref name="i"/> as a uint4 (only where <see cref="IsInteger"/>).</summary>
-        public int4 Integer(int i) => i switch { 6 => DepthSize, 7 => OtherSizes, 8 => SurfaceCounts, _ => Composite };
+        int4 Integer(int i) => i switch { 6 => DepthSize, 7 => OtherSizes, 8 => SurfaceCounts, _ => Composite };
     }
 }

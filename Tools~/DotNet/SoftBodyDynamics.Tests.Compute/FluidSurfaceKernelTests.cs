@@ -104,7 +104,7 @@ namespace SoftBodyDynamics.Tests.Compute
                     if (g || e) covered++;
                     if (g != e || g != cpu[i] > 0f) { mismatched++; continue; }
                     if (!g) continue;
-                    double h = NearestHalfChord(scene, f.Constants.DepthPinhole, x, y).HalfChord;
+                    double h = FluidSurfaceReference.PixelHits(scene, f.Constants.DepthPinhole, x, y).NearestHalfChord;
                     double bound = HitTolerance(exact.Depth[i], scene.Radius, h);
                     double d = Math.Max(Math.Abs(f.RawDepth[i] - exact.Depth[i]), Math.Abs(f.RawDepth[i] - cpu[i]) / 2);
                     worst = Math.Max(worst, d / bound);
@@ -132,7 +132,7 @@ namespace SoftBodyDynamics.Tests.Compute
                 for (int x = 0; x < f.Targets.Thickness.x; x++)
                 {
                     int i = y * f.Targets.Thickness.x + x;
-                    int hits = NearestHalfChord(scene, f.Constants.ThicknessPinhole, x, y).Hits;
+                    int hits = FluidSurfaceReference.PixelHits(scene, f.Constants.ThicknessPinhole, x, y).Hits;
                     if (hits > 0) covered++;
                     // Per chord: half a quantum of rounding, and at most 4√ε·r of float32 error (2·min(h, 4ε r²/h)).
                     double bound = hits * (quantum / 2 + 4 * Math.Sqrt(Epsilon) * scene.Radius) + 1e-9;

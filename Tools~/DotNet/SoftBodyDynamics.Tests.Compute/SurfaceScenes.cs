@@ -47,12 +47,5 @@ namespace SoftBodyDynamics.Tests.Compute
         /// division and the rounding of the inputs: 16ε z + 16ε r²/h.
         /// </summary>
         public static double HitTolerance(double z, double r, double h) => 16 * Epsilon * z + 16 * Epsilon * r * r / Math.Max(h, 1e-9);
-
-        /// <summary>Half the chord of the nearest sphere on a pixel's ray (float64), or 0 on a miss; the hit count too.</summary>
-        public static (double HalfChord, int Hits) NearestHalfChord(FluidSurfaceScene scene, float4 pinhole, int x, int y)
-        {
-            var hits = FluidSurfaceReference.PixelHits(scene, pinhole, x, y);
-            return (hits.NearestHalfChord, hits.Hits);
-        }
     }
 }
