@@ -8,7 +8,7 @@ using System.Text.RegularExpressions;
 namespace SoftBodyDynamics.PackageLint
 {
     /// <summary>
-    /// Checks what Unity needs to import the package from git, without Unity.
+    /// Checks what Unity needs to import the package from git, without Unity, and that the documentation's links resolve.
     /// Usage: PackageLint PACKAGE_ROOT [--fix]   (--fix writes missing .meta files with new GUIDs)
     /// Prints PASS/FAIL per rule and ends with "RESULT lint &lt;passed&gt; &lt;failed&gt;".
     /// </summary>
@@ -41,6 +41,7 @@ namespace SoftBodyDynamics.PackageLint
             CheckAsmdefs(root, imported, guids);
             CheckPackageJson(root);
             CheckSolverPurity(root);
+            CheckMarkdown(root);
 
             Console.WriteLine($"RESULT lint {s_Passed} {s_Failed}");
             return s_Failed == 0 ? 0 : 1;
@@ -266,6 +267,27 @@ namespace SoftBodyDynamics.PackageLint
                         problems.Add($"{Rel(root, file)}: System.Linq in solver code (not Burst-compatible)");
                 }
             Report("Runtime/Solvers uses Unity.Mathematics only (no engine, ECS or LINQ)", problems);
+        }
+
+        /// <summary>Largest README.md in bytes: the README is a front page; the manual holds the details.</summary>
+        const int k_MaxReadmeBytes = 9000;
+
+        static void CheckMarkdown(string root)
+        {
+            var files = new List<string> { "README.md", "CHANGELOG.md" };
+            string docs = Path.Combine(root, "Documentation~");
+            if (Directory.Exists(docs))
+                files.AddRange(Directory.EnumerateFiles(docs, "*.md").Select(f => Rel(root, f)).OrderBy(f => f, StringComparer.Ordinal));
+            var problems = new List<string>();
+            foreach (string f in files.Where(f => !File.Exists(Path.Combine(root, f)))) problems.Add($"{f} is missing");
+            problems.AddRange(MarkdownLinks.Check(root, files.Where(f => File.Exists(Path.Combine(root, f)))));
+            Report("Markdown links resolve (README.md, CHANGELOG.md, Documentation~/*.md)", problems);
+
+            var size = new List<string>();
+            var readme = new FileInfo(Path.Combine(root, "README.md"));
+            if (readme.Exists && readme.Length > k_MaxReadmeBytes)
+                size.Add($"README.md is {readme.Length} bytes; move details into Documentation~ and link them");
+            Report($"README.md is at most {k_MaxReadmeBytes} bytes", size);
         }
     }
 }
