@@ -2,14 +2,15 @@ using System.Collections.Generic;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
-    /// <summary>An error metric a scenario reports beside its time (name, value, unit, lower is better).</summary>
+    /// <summary>A measured value a scenario reports beside its time (name, value, unit); for errors, lower is better.</summary>
     public readonly struct Metric
     {
         public readonly string Name;
         public readonly double Value;
-        public readonly string Unit;
+        /// <summary>What <see cref="Value"/> is measured in; relative errors are <see cref="MetricUnit.Fraction"/>.</summary>
+        public readonly MetricUnit Unit;
 
-        public Metric(string name, double value, string unit = "")
+        public Metric(string name, double value, MetricUnit unit)
         {
             Name = name;
             Value = value;
@@ -53,10 +54,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
         /// <summary>Suite name, used for the report section and figure file names.</summary>
         string Name { get; }
-        /// <summary>One paragraph for the report: what is measured and against which reference.</summary>
-        string Description { get; }
-        /// <summary>Scenarios of the full run.</summary>
-        IEnumerable<IScenario> Scenarios(bool quick);
+        /// <summary>What the suite measures and against which reference, printed under its table.</summary>
+        SuiteDefinition Definition { get; }
+        /// <summary>The scenarios a run of <paramref name="scope"/> covers, in table order.</summary>
+        IEnumerable<IScenario> Scenarios(RunScope scope);
         /// <summary>The metric plotted against time per item in the accuracy-versus-cost figure; null for a suite without an error reference (no such figure).</summary>
         string ErrorMetricForPlot { get; }
     }
@@ -95,7 +96,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     public interface IScenarioSuiteSummary
     {
         /// <summary>Markdown: tables and sentences; the rows are in the order the suite yielded them.</summary>
-        string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick);
+        string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope);
     }
 
     /// <summary>

@@ -1,16 +1,17 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
 using System.IO;
+using System.Linq;
 using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
     /// <summary>
-    /// Headless scenario runner: runs every suite of <see cref="ScenarioCatalog"/>, prints a table
-    /// (scenario, method, size, ms per step, ns per item, items per second, error metrics) and writes a Markdown
-    /// report with PNG figures.
-    /// Usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT] [--method TEXT]
+    /// Headless scenario runner, the README's main job: runs the suites of <see cref="ScenarioCatalog"/> and the report parts
+    /// of <see cref="ReportParts"/>, prints one table per suite and a progress line per scenario, and rewrites report.md
+    /// (summary first), results.csv and timings.csv after every scenario. See <see cref="RunOptions.Usage"/>.
     /// </summary>
     static class Program
     {
@@ -18,23 +19,150 @@ namespace SoftBodyDynamics.Runner
         {
             CultureInfo.DefaultThreadCurrentCulture = CultureInfo.InvariantCulture;
             CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
-            var options = RunOptions.Parse(args);
+            RunOptions options = RunOptions.Parse(args, out string error);
             if (options == null)
             {
-                Console.Error.WriteLine("usage: SoftBodyDynamics.Runner [--out DIR] [--quick] [--repeats N] [--filter TEXT] [--method TEXT]");
+                Console.Error.WriteLine(error);
+                Console.Error.WriteLine(RunOptions.Usage);
                 return 2;
             }
+            if (options.Help)
+            {
+                Console.WriteLine(RunOptions.Usage);
+                return 0;
+            }
 
-            Directory.CreateDirectory(options.OutDir);
-            var results = new List<SuiteResult>();
-            foreach (IScenarioSuite suite in ScenarioCatalog.Suites)
+            string dir = Path.GetFullPath(options.OutDir);
+            Directory.CreateDirectory(dir);
+            RunPlan plan = RunPlan.Build(options);
+            var timings = RunTimings.Load(dir);
+            var estimate = new ProgressEstimate(timings, plan.Keys);
+            var clock = RunClock.Start();
+            var report = new Report(options, dir, plan.Count);
+            Console.Error.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
+
+            int index = 0;
+            foreach (PlannedSuite planned in plan.Suites)
+            {
+                var suiteResult = new SuiteResult(planned.Suite);
+                report.Suites.Add(suiteResult);
+                Console.WriteLine();
+                Console.WriteLine($"== {planned.Suite.Name}");
+                var table = new TablePrinter(Console.Out, planned.Scenarios.Select(p => p.Scenario));
+                if (planned.Scenarios.Count > 0)
+                    table.PrintHeader();
+                foreach (PlannedScenario p in planned.Scenarios)
+                {
+                    Console.Error.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                    long t0 = Stopwatch.GetTimestamp();
+                    int repeats = p.Scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
+                    ScenarioResult r = ScenarioTimer.Run(p.Scenario, repeats);
+                    double seconds = Seconds(t0);
+                    suiteResult.Rows.Add(r);
+                    table.PrintRow(r);
+                    timings.Record(plan.Keys[index], seconds);
+                    estimate.Finished(index, seconds);
+                    index++;
+                    report.Finished = index;
+                    report.Write(timings);
+                }
+                suiteResult.Finish(options.Scope, dir);
+                if (!string.IsNullOrEmpty(suiteResult.Summary))
+                {
+                    Console.WriteLine();
+                    Console.WriteLine(suiteResult.Summary.TrimEnd());
+                }
+                report.Write(timings);
+            }
+
+            foreach (ReportPart part in plan.Parts)
+            {
+                Console.Error.WriteLine(Progress(index, plan.Count, part.Title, clock, estimate));
+                Console.WriteLine();
+                Console.WriteLine($"== {part.Title}");
+                long t0 = Stopwatch.GetTimestamp();
+                PartResult result = part.Run(options, dir);
+                double seconds = Seconds(t0);
+                report.Parts.Add(result);
+                timings.Record(plan.Keys[index], seconds);
+                estimate.Finished(index, seconds);
+                index++;
+                report.Finished = index;
+                report.Write(timings);
+            }
+
+            report.Complete = true;
+            string path = report.Write(timings);
+            Console.WriteLine();
+            Console.WriteLine($"Report written to {path}");
+            Console.Error.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
+            return report.Parts.Any(p => !p.Succeeded) ? 1 : 0;
+        }
+
+        static double Seconds(long t0) => (Stopwatch.GetTimestamp() - t0) / (double)Stopwatch.Frequency;
+
+        /// <summary>"[i/N] what — m:ss elapsed, about m:ss left".</summary>
+        public static string Progress(int index, int count, string what, RunClock clock, ProgressEstimate estimate)
+        {
+            double? left = estimate.SecondsLeft(index);
+            string tail = left.HasValue ? $"about {ProgressEstimate.Clock(left.Value)} left" : "time left known after the first step";
+            return $"[{index + 1}/{count}] {what} — {ProgressEstimate.Clock(clock.Elapsed)} elapsed, {tail}";
+        }
+    }
+
+    /// <summary>Elapsed time of the main job: from the moment run.sh started (SBD_RUN_STARTED, Unix seconds) where given, so the build counts.</summary>
+    sealed class RunClock
+    {
+        readonly DateTimeOffset m_Start;
+        RunClock(DateTimeOffset start) { m_Start = start; }
+
+        public static RunClock Start()
+        {
+            string started = Environment.GetEnvironmentVariable("SBD_RUN_STARTED");
+            if (long.TryParse(started, NumberStyles.Integer, CultureInfo.InvariantCulture, out long unix) && unix > 0)
+            {
+                var s = DateTimeOffset.FromUnixTimeSeconds(unix);
+                if (s <= DateTimeOffset.UtcNow)
+                    return new RunClock(s);
+            }
+            return new RunClock(DateTimeOffset.UtcNow);
+        }
+
+        public double Elapsed => (DateTimeOffset.UtcNow - m_Start).TotalSeconds;
+    }
+
+    /// <summary>A scenario of the plan, with its size as known before Setup (the key of its timing).</summary>
+    sealed class PlannedScenario
+    {
+        public IScenario Scenario;
+        public int Size;
+    }
+
+    sealed class PlannedSuite
+    {
+        public IScenarioSuite Suite;
+        public List<PlannedScenario> Scenarios = new List<PlannedScenario>();
+    }
+
+    /// <summary>Every step of a run, known before the first starts: the suites with their scenarios, then the report parts.</summary>
+    sealed class RunPlan
+    {
+        public readonly List<PlannedSuite> Suites = new List<PlannedSuite>();
+        public readonly List<ReportPart> Parts = new List<ReportPart>();
+        /// <summary>Timing key of each step, in run order.</summary>
+        public readonly List<string> Keys = new List<string>();
+        public int Count => Keys.Count;
+
+        public static RunPlan Build(RunOptions options) => Build(options, ScenarioCatalog.Suites, ReportParts.All);
+
+        public static RunPlan Build(RunOptions options, IEnumerable<IScenarioSuite> suites, IEnumerable<ReportPart> parts)
+        {
+            var plan = new RunPlan();
+            foreach (IScenarioSuite suite in suites)
             {
                 if (options.Filter != null && suite.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) < 0)
                     continue;
-                var suiteResult = new SuiteResult(suite);
-                Console.WriteLine();
-                Console.WriteLine($"== {suite.Name}");
-                var scenarios = new List<IScenario>(suite.Scenarios(options.Quick));
+                var scenarios = new List<IScenario>(suite.Scenarios(options.Scope));
                 // A suite left with no scenario by --method is skipped (a summary-only suite, which has none, still runs).
                 if (options.Method != null && scenarios.Count > 0)
                 {
@@ -42,58 +170,23 @@ namespace SoftBodyDynamics.Runner
                     if (scenarios.Count == 0)
                         continue;
                 }
-                var table = new TablePrinter(Console.Out, scenarios);
-                table.PrintHeader();
-                foreach (IScenario scenario in scenarios)
+                var planned = new PlannedSuite { Suite = suite };
+                foreach (IScenario sc in scenarios)
                 {
-                    int repeats = scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
-                    ScenarioResult r = ScenarioTimer.Run(scenario, repeats);
-                    suiteResult.Rows.Add(r);
-                    table.PrintRow(r);
+                    planned.Scenarios.Add(new PlannedScenario { Scenario = sc, Size = sc.Size });
+                    plan.Keys.Add(RunTimings.Key(suite.Name, $"{sc.Name}: {sc.Method} ({sc.Size} {sc.SizeUnit}), {RunOptions.ScopeName(options.Scope)}"));
                 }
-                if (suite is IScenarioSuiteSummary summary)
-                {
-                    var outcomes = suiteResult.Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep));
-                    suiteResult.Summary = summary.Summary(outcomes, options.Quick);
-                    Console.WriteLine();
-                    Console.WriteLine(suiteResult.Summary.TrimEnd());
-                }
-                results.Add(suiteResult);
+                plan.Suites.Add(planned);
             }
-
-            string reportPath = ReportWriter.Write(options, results);
-            Console.WriteLine();
-            Console.WriteLine($"Report written to {reportPath}");
-            return 0;
-        }
-    }
-
-    sealed class RunOptions
-    {
-        public string OutDir = Path.Combine("Reports~", "latest");
-        public bool Quick;
-        public int Repeats = 15;
-        public string Filter;
-        /// <summary>Only scenarios whose method text contains this (case-insensitive), e.g. "Neo-Hookean implicit"; null = all.</summary>
-        public string Method;
-
-        public static RunOptions Parse(string[] args)
-        {
-            var o = new RunOptions();
-            for (int i = 0; i < args.Length; i++)
-            {
-                switch (args[i])
-                {
-                    case "--out" when i + 1 < args.Length: o.OutDir = args[++i]; break;
-                    case "--quick": o.Quick = true; break;
-                    case "--repeats" when i + 1 < args.Length && int.TryParse(args[i + 1], out int n) && n > 0:
-                        o.Repeats = n; i++; break;
-                    case "--filter" when i + 1 < args.Length: o.Filter = args[++i]; break;
-                    case "--method" when i + 1 < args.Length: o.Method = args[++i]; break;
-                    default: return null;
-                }
-            }
-            return o;
+            // The report parts run only when no --method narrows the run, and with --filter only when it names them.
+            if (options.Method == null)
+                foreach (ReportPart part in parts)
+                    if (options.Filter == null || part.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) >= 0)
+                    {
+                        plan.Parts.Add(part);
+                        plan.Keys.Add(RunTimings.Key(part.Name, RunOptions.ScopeName(options.Scope)));
+                    }
+            return plan;
         }
     }
 
@@ -103,7 +196,41 @@ namespace SoftBodyDynamics.Runner
         public readonly List<ScenarioResult> Rows = new List<ScenarioResult>();
         /// <summary>Markdown the suite wrote about all its rows (<see cref="IScenarioSuiteSummary"/>), or null.</summary>
         public string Summary;
+        /// <summary>Lines the suite gave the report's summary.</summary>
+        public readonly List<Finding> Findings = new List<Finding>();
+        /// <summary>Figures drawn once the suite finished: file name and caption.</summary>
+        public readonly List<(string File, string Alt, string Caption)> Figures = new List<(string, string, string)>();
+        public bool Finished;
+
         public SuiteResult(IScenarioSuite suite) { Suite = suite; }
+
+        public IReadOnlyList<ScenarioOutcome> Outcomes() =>
+            Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep));
+
+        /// <summary>Runs the suite's summary and findings and draws its figures.</summary>
+        public void Finish(RunScope scope, string dir)
+        {
+            IReadOnlyList<ScenarioOutcome> outcomes = Outcomes();
+            if (Suite is IScenarioSuiteSummary summary)
+                Summary = summary.Summary(outcomes, scope);
+            if (Suite is IScenarioSuiteFindings findings)
+                Findings.AddRange(findings.Findings(outcomes, scope));
+            if (SoftBodyDynamics.Runner.Figures.HasGnuplot())
+            {
+                string pareto = SoftBodyDynamics.Runner.Figures.PlotAccuracyVersusCost(dir, this);
+                string cost = Suite is IScenarioSuiteFigure figure ? figure.CostLabel : "ns per item";
+                if (pareto != null)
+                    Figures.Add((pareto, $"{Suite.Name}: {Suite.ErrorMetricForPlot} against {cost}",
+                        $"{Suite.ErrorMetricForPlot} (lower is better) against {cost} (left is cheaper); an error of exactly 0 is drawn at {SoftBodyDynamics.Runner.Figures.LogFloor:E0}."));
+                string scaling = SoftBodyDynamics.Runner.Figures.PlotScaling(dir, this);
+                if (scaling != null)
+                    Figures.Add((scaling, $"{Suite.Name}: time per item against size", "Time per item against problem size (log–log): flat means cost linear in N."));
+            }
+            Finished = true;
+        }
+
+        /// <summary>The accuracy-versus-cost figure's file, or null.</summary>
+        public string AccuracyFigure => Figures.Where(f => f.File.EndsWith("-accuracy-vs-cost.png")).Select(f => f.File).FirstOrDefault();
     }
 
     sealed class ScenarioResult
@@ -118,12 +245,21 @@ namespace SoftBodyDynamics.Runner
         public IReadOnlyList<Metric> Metrics;
         public double NsPerItem => MedianMs * 1e6 / Math.Max(1, ItemsPerStep);
         public double ItemsPerSecond => ItemsPerStep / (MedianMs * 1e-3);
+
         /// <summary>The named metric, or NaN when this scenario does not report it.</summary>
         public double MetricValue(string name)
         {
             foreach (Metric m in Metrics)
                 if (m.Name == name) return m.Value;
             return double.NaN;
+        }
+
+        /// <summary>The unit of the named metric (<see cref="Benchmarks.Scenarios.MetricUnit.Dimensionless"/> when the row does not report it).</summary>
+        public MetricUnit MetricUnit(string name)
+        {
+            foreach (Metric m in Metrics)
+                if (m.Name == name) return m.Unit;
+            return Benchmarks.Scenarios.MetricUnit.Dimensionless;
         }
     }
 }

@@ -29,7 +29,7 @@ namespace SoftBodyDynamics.Runner
 
         public void PrintRow(ScenarioResult r)
         {
-            string metrics = string.Join("  ", r.Metrics.Select(m => $"{m.Name}={Format.Value(m.Value)}{m.Unit}"));
+            string metrics = string.Join("  ", r.Metrics.Select(m => $"{m.Name}={Format.Value(MetricUnits.Displayed(m.Value, m.Unit))}{MetricUnits.Suffix(m.Unit)}"));
             m_Writer.WriteLine($"{Pad(r.Name, m_NameWidth)} {Pad(r.Method, m_MethodWidth)} {r.Size,9} {r.MedianMs,10:F3} {r.NsPerItem,9:F1} {Format.Rate(r.ItemsPerSecond),9}  {metrics}");
             if (r.AllocatedBytesPerStep > 0)
                 m_Writer.WriteLine($"  warning: Step allocated {r.AllocatedBytesPerStep:F0} bytes per call (scenarios must not allocate in Step)");

@@ -169,15 +169,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             return new[]
             {
-                new Metric("front RMS error", FrontError(0), "Z"),
-                new Metric("front RMS error (shifted)", best, "Z"),
-                new Metric("shift", bestShift, "T"),
-                new Metric("density error", 100 * m_DensityErrorSum / Math.Max(1, m_DensitySamples), "%"),
-                new Metric("Z at T=3.33", FluidScene.Interpolate(m_SampleT, m_SampleZ, m_Samples, LastTableT), "Z"),
-                new Metric("late front speed", FrontSpeed(m_SampleT, m_SampleZ, m_Samples, LateT, LastTableT), "dZ/dT"),
-                new Metric("max substeps per frame", m_MaxSubsteps),
-                new Metric("capped frames", m_Capped),
-                new Metric("particles lost", m_InitialCount - m_Buffers.Status.Count),
+                new Metric("front RMS error", FrontError(0), MetricUnit.ColumnWidth),
+                new Metric("front RMS error (shifted)", best, MetricUnit.ColumnWidth),
+                new Metric("shift", bestShift, MetricUnit.DimensionlessTime),
+                new Metric("density error", m_DensityErrorSum / Math.Max(1, m_DensitySamples), MetricUnit.Fraction),
+                new Metric("Z at T=3.33", FluidScene.Interpolate(m_SampleT, m_SampleZ, m_Samples, LastTableT), MetricUnit.ColumnWidth),
+                new Metric("late front speed", FrontSpeed(m_SampleT, m_SampleZ, m_Samples, LateT, LastTableT), MetricUnit.Dimensionless),
+                new Metric("max substeps per frame", m_MaxSubsteps, MetricUnit.Count),
+                new Metric("capped frames", m_Capped, MetricUnit.Count),
+                new Metric("particles lost", m_InitialCount - m_Buffers.Status.Count, MetricUnit.Count),
             };
         }
     }

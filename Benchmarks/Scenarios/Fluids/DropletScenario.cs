@@ -166,14 +166,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public IReadOnlyList<Metric> Evaluate()
         {
-            var metrics = new List<Metric> { new Metric("sphericity at 0 s", m_Sphericity[0]) };
+            var metrics = new List<Metric> { new Metric("sphericity at 0 s", m_Sphericity[0], MetricUnit.Dimensionless) };
             foreach (double t in ReportTimes)
-                metrics.Add(new Metric($"sphericity at {t:0.##} s", SphericityAt(t)));
-            metrics.Add(new Metric("sphericity", m_Sphericity[Frames]));
-            metrics.Add(new Metric("time to round", m_TimeToRound, "s"));
-            metrics.Add(new Metric("radius error", 100 * m_RadiusError, "%"));
-            metrics.Add(new Metric("density error", 100 * m_DensityError, "%"));
-            metrics.Add(new Metric("RMS speed", m_Speed, "m/s"));
+                metrics.Add(new Metric($"sphericity at {t:0.##} s", SphericityAt(t), MetricUnit.Dimensionless));
+            metrics.Add(new Metric("sphericity", m_Sphericity[Frames], MetricUnit.Dimensionless));
+            metrics.Add(new Metric("time to round", m_TimeToRound, MetricUnit.Second));
+            metrics.Add(new Metric("radius error", m_RadiusError, MetricUnit.Fraction));
+            metrics.Add(new Metric("density error", m_DensityError, MetricUnit.Fraction));
+            metrics.Add(new Metric("RMS speed", m_Speed, MetricUnit.MetrePerSecond));
             return metrics;
         }
     }

@@ -31,7 +31,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "FluidAccuracy";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "Dam break after Martin & Moyce 1952 (n² = 2, a = 0.05715 m, Table 2; slab four particles deep between free-slip walls; " +
             "front = leading edge of particles with ≥ 4 neighbours) from release to T = t·√(2g/a) = 3.4, for the weakly compressible " +
             "solver (WCSPH, Tait γ = 7, artificial viscosity α = 0.05, CFL 0.4, speed of sound c₀ a multiple of √(2g·2a) = 1.50 m/s) and " +
@@ -48,8 +50,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string ErrorMetricForPlot => "front RMS error (shifted)";
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             foreach (int resolution in quick ? new[] { 10 } : Resolutions)
             {
                 bool finest = resolution == FinestResolution;
@@ -133,8 +136,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public double Cost(ScenarioOutcome row) => row.NsPerItem;
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var md = new StringBuilder();
             DamBreakSummary(md, rows);
             HydrostaticSummary(md, rows);
@@ -162,7 +166,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             foreach (ScenarioOutcome r in dam)
                 md.AppendLine(F("| {0} | {1:0.000} | {2:0.000} ({3:0.00}) | {4:0.00} | {5:0.00} | {6:0.00} % | {7:0} | {8:0} | {9:0} |",
                     r.Method, r.Value("front RMS error"), r.Value("front RMS error (shifted)"), r.Value("shift"), r.Value("Z at T=3.33"),
-                    r.Value("late front speed"), r.Value("density error"), r.NsPerItem, RunMs(r), r.Value("max substeps per frame")));
+                    r.Value("late front speed"), 100 * r.Value("density error"), r.NsPerItem, RunMs(r), r.Value("max substeps per frame")));
             md.AppendLine();
 
             // Front error per resolution: one line per setting, one column per resolution.
@@ -237,13 +241,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 double depth = r.Value("zero-pressure depth");
                 md.AppendLine(F("| {0} | {1} | {2} | {3} | {4} | {5:0.00} % | {6:0.0e+0} | {7:0.0} | {8:0} |", r.Method, Percent(r.Value("pressure gradient error")),
                     Percent(r.Value("pressure L2 error")), Percent(r.Value("pressure scatter")), double.IsNaN(depth) ? "–" : F("{0:0}", depth),
-                    r.Value("density error"), r.Value("kinetic energy"), r.Value("surface drift"), r.Value("particles lost")));
+                    100 * r.Value("density error"), r.Value("kinetic energy"), r.Value("surface drift"), r.Value("particles lost")));
             }
             if (header)
                 md.AppendLine();
         }
 
-        static string Percent(double v) => double.IsNaN(v) ? "–" : F("{0:0.0} %", v);
+        static string Percent(double fraction) => double.IsNaN(fraction) ? "–" : F("{0:0.0} %", 100 * fraction);
 
         static void DropletSummary(StringBuilder md, IReadOnlyList<ScenarioOutcome> rows)
         {
@@ -269,7 +273,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     md.Append(F(" {0:0.000} |", r.Value(F("sphericity at {0:0.##} s", t))));
                 double round = r.Value("time to round");
                 md.AppendLine(F(" {0:0.000} | {1} | {2:+0.0;−0.0} % | {3:0.00} % | {4:0.0e+0} | {5:0} |", r.Value("sphericity"),
-                    double.IsNaN(round) ? "not reached" : F("{0:0.00} s", round), r.Value("radius error"), r.Value("density error"), r.Value("RMS speed"), RunMs(r)));
+                    double.IsNaN(round) ? "not reached" : F("{0:0.00} s", round), 100 * r.Value("radius error"), 100 * r.Value("density error"), r.Value("RMS speed"), RunMs(r)));
             }
             if (header)
                 md.AppendLine();
@@ -293,7 +297,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     r.Value("finite") == 1 ? "yes" : "NO", r.Value("in box") == 1 ? "yes" : "NO", r.Value("alive"), r.Value("invalid removed"),
                     r.Value("max speed"), r.Value("speed clamped"), r.Value("over-compressed"), r.Value("neighbour overflow"), r.Value("max density ratio"),
                     r.Value("substeps wanted"), r.Value("substeps run"),
-                    double.IsNaN(fall) ? F("{0:0.0}", r.Value("spread")) : F("– (free fall {0:0.00} % off ½gt²)", fall)));
+                    double.IsNaN(fall) ? F("{0:0.0}", r.Value("spread")) : F("– (free fall {0:0.00} % off ½gt²)", 100 * fall)));
             }
             if (header)
             {

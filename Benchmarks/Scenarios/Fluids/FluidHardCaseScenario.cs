@@ -194,21 +194,21 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             var metrics = new List<Metric>
             {
-                new Metric("finite", finite),
-                new Metric("in box", inside),
-                new Metric("alive", b.Status.Count),
-                new Metric("invalid removed", b.Status.Invalid),
-                new Metric("max speed", maxSpeed, "m/s"),
-                new Metric("speed clamped", m_SpeedClamped),
-                new Metric("over-compressed", m_OverCompressed),
-                new Metric("neighbour overflow", m_NeighbourOverflow),
-                new Metric("max density ratio", m_MaxDensityRatio),
-                new Metric("substeps wanted", m_SubstepsWanted),
-                new Metric("substeps run", m_SubstepsRun),
-                new Metric("spread", m_Spread, "Δx"),
+                new Metric("finite", finite, MetricUnit.Flag),
+                new Metric("in box", inside, MetricUnit.Flag),
+                new Metric("alive", b.Status.Count, MetricUnit.Count),
+                new Metric("invalid removed", b.Status.Invalid, MetricUnit.Count),
+                new Metric("max speed", maxSpeed, MetricUnit.MetrePerSecond),
+                new Metric("speed clamped", m_SpeedClamped, MetricUnit.Count),
+                new Metric("over-compressed", m_OverCompressed, MetricUnit.Count),
+                new Metric("neighbour overflow", m_NeighbourOverflow, MetricUnit.Count),
+                new Metric("max density ratio", m_MaxDensityRatio, MetricUnit.Dimensionless),
+                new Metric("substeps wanted", m_SubstepsWanted, MetricUnit.Count),
+                new Metric("substeps run", m_SubstepsRun, MetricUnit.Count),
+                new Metric("spread", m_Spread, MetricUnit.ParticleSpacing),
             };
             if (m_Case == FluidHardCase.Isolated)
-                metrics.Add(new Metric("free-fall error", 100 * m_FreeFallError, "%"));
+                metrics.Add(new Metric("free-fall error", m_FreeFallError, MetricUnit.Fraction));
             return metrics;
         }
 

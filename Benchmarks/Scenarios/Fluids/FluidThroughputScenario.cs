@@ -279,13 +279,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             var metrics = new List<Metric>
             {
-                new Metric("neighbours", MeanNeighbours()),
-                new Metric("bytes per particle", FluidBuffers.BytesPerParticle + 4.0 * (m_Constants.Grid.CellCount + 2) / Size, "B"),
-                new Metric("particles lost", m_Count - m_Buffers.Status.Count),
+                new Metric("neighbours", MeanNeighbours(), MetricUnit.Dimensionless),
+                new Metric("bytes per particle", FluidBuffers.BytesPerParticle + 4.0 * (m_Constants.Grid.CellCount + 2) / Size, MetricUnit.Byte),
+                new Metric("particles lost", m_Count - m_Buffers.Status.Count, MetricUnit.Count),
             };
             if (m_Row == FluidThroughputRow.Staged)
             {
-                metrics.Add(new Metric("same bits as FluidSolver.Step", m_SameBits));
+                metrics.Add(new Metric("same bits as FluidSolver.Step", m_SameBits, MetricUnit.Flag));
                 var samples = new long[Math.Max(1, m_Recorded)];
                 foreach (FluidStage stage in (FluidStage[])Enum.GetValues(typeof(FluidStage)))
                 {
@@ -294,7 +294,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     Array.Sort(samples, 0, m_Recorded);
                     double median = m_Recorded == 0 ? double.NaN
                         : m_Recorded % 2 == 1 ? samples[m_Recorded / 2] : 0.5 * (samples[m_Recorded / 2 - 1] + samples[m_Recorded / 2]);
-                    metrics.Add(new Metric(StageMetric(stage), median * 1e9 / Stopwatch.Frequency / Math.Max(1, m_Count), "ns"));
+                    metrics.Add(new Metric(StageMetric(stage), median * 1e9 / Stopwatch.Frequency / Math.Max(1, m_Count), MetricUnit.Nanosecond));
                 }
             }
             return metrics;

@@ -16,7 +16,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "FluidThroughput";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "A cube of water at Δx = 2 cm resting in a box (weakly compressible, c₀ = 20 m/s, α = 0.05, one viscosity iteration, h = 2Δx: " +
             "26 neighbours on the rest lattice, 27–29 in the settled block), single-threaded .NET on this machine. 'WCSPH substep (FluidSolver.Step)' " +
             "is one CFL substep through the solver, so its items/s are particle-substeps per second. 'WCSPH substep, staged' runs the same substep " +
@@ -26,15 +28,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             foreach (int side in quick ? new[] { 22 } : Sides)
             foreach (FluidThroughputRow row in (FluidThroughputRow[])Enum.GetValues(typeof(FluidThroughputRow)))
                 yield return new FluidThroughputScenario(side, row);
         }
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var sizes = new List<int>();
             foreach (ScenarioOutcome r in rows)
                 if (!sizes.Contains(r.Size))

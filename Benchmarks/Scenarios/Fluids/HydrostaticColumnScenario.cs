@@ -146,15 +146,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public IReadOnlyList<Metric> Evaluate() => new[]
         {
-            new Metric("pressure L2 error", 100 * m_PressureError, "%"),
-            new Metric("pressure gradient error", 100 * m_GradientError, "%"),
-            new Metric("zero-pressure depth", 1000 * m_SurfaceOffset, "mm"),
-            new Metric("pressure scatter", 100 * m_PressureScatter, "%"),
-            new Metric("density error", 100 * m_DensityError, "%"),
-            new Metric("kinetic energy", m_Kinetic, "J/kg"),
-            new Metric("surface drift", 1000 * m_Drift, "mm"),
-            new Metric("interior particles", m_Interior),
-            new Metric("particles lost", m_Initial - m_Buffers.Status.Count),
+            new Metric("pressure L2 error", m_PressureError, MetricUnit.Fraction),
+            new Metric("pressure gradient error", m_GradientError, MetricUnit.Fraction),
+            new Metric("zero-pressure depth", 1000 * m_SurfaceOffset, MetricUnit.Millimetre),
+            new Metric("pressure scatter", m_PressureScatter, MetricUnit.Fraction),
+            new Metric("density error", m_DensityError, MetricUnit.Fraction),
+            new Metric("kinetic energy", m_Kinetic, MetricUnit.JoulePerKilogram),
+            new Metric("surface drift", 1000 * m_Drift, MetricUnit.Millimetre),
+            new Metric("interior particles", m_Interior, MetricUnit.Count),
+            new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
         };
     }
 }

@@ -90,13 +90,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             meanIt /= Math.Max(1, Size);
             return new[]
             {
-                new Metric("non-finite", nonFinite),
-                new Metric("max |det R - 1|", maxDet),
-                new Metric("max orth err", maxOrth),
-                new Metric("p99 gap", gaps[(int)(0.99 * (Size - 1))]),
-                new Metric("max gap", gaps[Size - 1]),
-                new Metric("mean it", meanIt),
-                new Metric("p99 it", its[(int)(0.99 * (Size - 1))]),
+                new Metric("non-finite", nonFinite, MetricUnit.Count),
+                new Metric("max |det R - 1|", maxDet, MetricUnit.Dimensionless),
+                new Metric("max orth err", maxOrth, MetricUnit.Dimensionless),
+                new Metric("p99 gap", gaps[(int)(0.99 * (Size - 1))], MetricUnit.Fraction),
+                new Metric("max gap", gaps[Size - 1], MetricUnit.Fraction),
+                new Metric("mean it", meanIt, MetricUnit.Dimensionless),
+                new Metric("p99 it", its[(int)(0.99 * (Size - 1))], MetricUnit.Count),
             };
         }
     }
@@ -106,7 +106,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
         public string Name => "RotationExtraction";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "Rotational part of A = Σ m p qᵀ for seeded 12-particle clusters from every hard-case family " +
             "(rotated/stretched, random, mirrored, coplanar, collinear, coincident, flattened to ±1e-4; scales 1e-4…1e4). " +
             "Errors against a float64 SVD with sign fix: the objective gap is (max tr(R'ᵀA) − tr(RᵀA)) / Σσ over proper rotations, " +
@@ -114,8 +116,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string ErrorMetricForPlot => "p99 gap";
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             int[] sizes = quick ? new[] { 1000, 10000 } : new[] { 1000, 10000, 100000 };
             foreach (int n in sizes)
                 yield return new RotationExtractionScenario(n, RotationStart.Warm, RotationExtraction.DefaultMaxIterations);

@@ -68,9 +68,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             SpinningBlobResult spin = SpinningBlob.Run(m_Model, m_Parameters, Spacing, Seed);
             return new[]
             {
-                new Metric(ShapeMatchingConservationSuite.MomentumDrift, spin.MaxMomentumDrift),
-                new Metric(ShapeMatchingConservationSuite.AngularMomentumDrift, spin.MaxAngularMomentumDrift),
-                new Metric(ShapeMatchingConservationSuite.Resets, spin.Resets),
+                new Metric(ShapeMatchingConservationSuite.MomentumDrift, spin.MaxMomentumDrift, MetricUnit.Fraction),
+                new Metric(ShapeMatchingConservationSuite.AngularMomentumDrift, spin.MaxAngularMomentumDrift, MetricUnit.Fraction),
+                new Metric(ShapeMatchingConservationSuite.Resets, spin.Resets, MetricUnit.Count),
             };
         }
     }

@@ -17,7 +17,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingConservation";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             $"A {ShapeMatchingConservationScenario.BodySize} m cube of {ShapeMatchingConservationScenario.Edge}³ particles " +
             $"({ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, " +
             $"{ShapeMatchingConservationScenario.Substeps} substeps per 1/60 s step, no gravity, no colliders), as one cluster or 8 overlapping 4³ clusters, " +
@@ -32,8 +34,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>None: drift is not an error against a reference, so no accuracy figure.</summary>
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             if (quick)
             {
                 foreach (ShapeMatchingClusterLayout layout in s_QuickLayouts)

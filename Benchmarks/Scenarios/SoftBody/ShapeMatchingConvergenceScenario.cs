@@ -65,20 +65,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double omega = m_Study.Release.Parameters.AngularFrequency;
             var metrics = new List<Metric>
             {
-                new Metric(ShapeMatchingConvergenceSuite.TrajectoryError, m_Study.Error(m_Substeps)),
+                new Metric(ShapeMatchingConvergenceSuite.TrajectoryError, m_Study.Error(m_Substeps), MetricUnit.Fraction),
             };
             if (m_PreviousSubsteps > 0)
-                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Order, m_Study.ObservedOrder(m_PreviousSubsteps, m_Substeps)));
-            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.ReferenceChange, m_Study.ReferenceChange));
-            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Phase, omega * ConvergenceRelease.FrameTime / m_Substeps, " rad"));
+                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Order, m_Study.ObservedOrder(m_PreviousSubsteps, m_Substeps), MetricUnit.Dimensionless));
+            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.ReferenceChange, m_Study.ReferenceChange, MetricUnit.Fraction));
+            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Phase, omega * ConvergenceRelease.FrameTime / m_Substeps, MetricUnit.Radian));
             FreeOscillationResult oscillation = m_Study.Oscillation(m_Substeps);
             if (oscillation.Fit.Valid)
             {
                 ShapeMatchingParameters p = m_Study.Release.Parameters;
-                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.FrequencyError, oscillation.Fit.Frequency / p.Frequency - 1));
-                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.DampingError, oscillation.Fit.DampingRatio / p.DampingRatio - 1));
+                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.FrequencyError, oscillation.Fit.Frequency / p.Frequency - 1, MetricUnit.Fraction));
+                metrics.Add(new Metric(ShapeMatchingConvergenceSuite.DampingError, oscillation.Fit.DampingRatio / p.DampingRatio - 1, MetricUnit.Fraction));
             }
-            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Resets, oscillation.Resets + m_Study.Resets(m_Substeps)));
+            metrics.Add(new Metric(ShapeMatchingConvergenceSuite.Resets, oscillation.Resets + m_Study.Resets(m_Substeps), MetricUnit.Count));
             return metrics;
         }
     }

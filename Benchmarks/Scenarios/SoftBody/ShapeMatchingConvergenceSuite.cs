@@ -55,7 +55,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingConvergence";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             $"A {ConvergenceStudy.BodySize} m cube of {ConvergenceStudy.Edge}³ = {ConvergenceStudy.Edge * ConvergenceStudy.Edge * ConvergenceStudy.Edge} particles " +
             $"({ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, no gravity), " +
             "as one cluster or as 8 overlapping 4³ clusters, squashed to 0.8 of its height (x, z stretched to keep the volume), twisted by 0.3 rad " +
@@ -88,8 +90,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string CostLabel => "ns per particle-step (one particle through a 1/60 s step, all substeps), median";
         public double Cost(ScenarioOutcome row) => row.NsPerItem;
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             int[] counts = quick ? QuickSubstepCounts : SubstepCounts;
             int referenceSteps = quick ? QuickReferenceStepsPerFrame : ConvergenceStudy.ReferenceStepsPerFrame;
             foreach ((ShapeMatchingMode mode, ShapeMatchingClusterLayout layout) in quick ? s_QuickFamilies : s_Families)
@@ -98,8 +101,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>One table: the error per substep count with the observed order in brackets, and the reference's change.</summary>
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var families = rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
             int[] counts = quick ? QuickSubstepCounts : SubstepCounts;
             var md = new StringBuilder();

@@ -69,15 +69,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double predicted = RestingSag.PredictedSagRatio(omega, m_Study.Material.DampingRatio, h);
             var metrics = new List<Metric>
             {
-                new Metric(ShapeMatchingFrameRateSuite.Substeps, rest.Substeps),
-                new Metric(ShapeMatchingFrameRateSuite.Phase, omega * h, " rad"),
-                new Metric(ShapeMatchingFrameRateSuite.HeightRatio, rest.Height / reference.Height),
-                new Metric(ShapeMatchingFrameRateSuite.SagRatio, sagRatio),
-                new Metric(ShapeMatchingFrameRateSuite.SagError, Math.Abs(sagRatio - 1)),
-                new Metric(ShapeMatchingFrameRateSuite.PredictedSag, predicted),
-                new Metric(ShapeMatchingFrameRateSuite.SagVersusPrediction, sagRatio / predicted - 1),
-                new Metric(ShapeMatchingFrameRateSuite.Volume, rest.VolumeRatio),
-                new Metric(ShapeMatchingFrameRateSuite.VolumeDeviation, rest.VolumeRatio / reference.VolumeRatio - 1),
+                new Metric(ShapeMatchingFrameRateSuite.Substeps, rest.Substeps, MetricUnit.Count),
+                new Metric(ShapeMatchingFrameRateSuite.Phase, omega * h, MetricUnit.Radian),
+                new Metric(ShapeMatchingFrameRateSuite.HeightRatio, rest.Height / reference.Height, MetricUnit.Dimensionless),
+                new Metric(ShapeMatchingFrameRateSuite.SagRatio, sagRatio, MetricUnit.Dimensionless),
+                new Metric(ShapeMatchingFrameRateSuite.SagError, Math.Abs(sagRatio - 1), MetricUnit.Fraction),
+                new Metric(ShapeMatchingFrameRateSuite.PredictedSag, predicted, MetricUnit.Fraction),
+                new Metric(ShapeMatchingFrameRateSuite.SagVersusPrediction, sagRatio / predicted - 1, MetricUnit.Fraction),
+                new Metric(ShapeMatchingFrameRateSuite.Volume, rest.VolumeRatio, MetricUnit.Dimensionless),
+                new Metric(ShapeMatchingFrameRateSuite.VolumeDeviation, rest.VolumeRatio / reference.VolumeRatio - 1, MetricUnit.Fraction),
             };
             int resets = rest.Resets;
             if (m_Study.ResistedMode != null)
@@ -86,14 +86,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 resets += wobble.Resets;
                 if (wobble.Fit.Valid)
                 {
-                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.FrequencyError, wobble.FrequencyDeviation(m_Study.Material.Frequency)));
-                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.FrequencyTolerance, wobble.FrequencyTolerance));
-                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.DampingError, wobble.DampingRatioDeviation(m_Study.Material.DampingRatio)));
-                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.DampingTolerance, wobble.DampingRatioTolerance));
+                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.FrequencyError, wobble.FrequencyDeviation(m_Study.Material.Frequency), MetricUnit.Fraction));
+                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.FrequencyTolerance, wobble.FrequencyTolerance, MetricUnit.Fraction));
+                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.DampingError, wobble.DampingRatioDeviation(m_Study.Material.DampingRatio), MetricUnit.Fraction));
+                    metrics.Add(new Metric(ShapeMatchingFrameRateSuite.DampingTolerance, wobble.DampingRatioTolerance, MetricUnit.Fraction));
                 }
             }
-            metrics.Add(new Metric(ShapeMatchingFrameRateSuite.PlasticUpdates, rest.PlasticUpdates));
-            metrics.Add(new Metric(ShapeMatchingFrameRateSuite.Resets, resets));
+            metrics.Add(new Metric(ShapeMatchingFrameRateSuite.PlasticUpdates, rest.PlasticUpdates, MetricUnit.Count));
+            metrics.Add(new Metric(ShapeMatchingFrameRateSuite.Resets, resets, MetricUnit.Count));
             return metrics;
         }
     }

@@ -45,7 +45,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingFrameRate";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             $"The Jelly, Rubber and Clay presets (ShapeMatchingMaterial; Clay with its plasticity) on a {FrameRateStudy.BodySize} m cube of " +
             $"{FrameRateStudy.Edge}³ particles with overlapping 4³ clusters, stepped at 30, 60 and 120 Hz with 1, 2, 4, 8, 16 and 32 substeps " +
             "requested and the default substep phase limit (0.5 rad), so the solver takes at least what ωh ≤ 0.5 needs: 'substeps' is the count " +
@@ -77,8 +79,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return double.Parse(parts[1].Trim().Split(' ')[0], CultureInfo.InvariantCulture);
         }
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             foreach (string preset in quick ? s_QuickPresets : Presets)
             foreach (float rate in Rates)
             foreach (int n in quick ? s_QuickSubsteps : RequestedSubsteps)
@@ -107,8 +110,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return AccuracyTolerances.RestingDeadBand(study.Reference.Extent, study.Material.DampingRatio, omega, RestingSag.Gravity, phase / omega);
         }
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var md = new StringBuilder();
             md.AppendLine("Frame-rate table: every row of a preset, against the stated tolerances " +
                           "(sag: the rule's bound at ωh = 0.5, (0.5)²/α(0.5) − 1, widened by sag0/size of itself, the dt → 0 reference's uncertainty and the " +

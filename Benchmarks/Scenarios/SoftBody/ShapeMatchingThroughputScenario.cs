@@ -80,8 +80,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public IReadOnlyList<Metric> Evaluate() => new[]
         {
-            new Metric("resets", m_Resets),
-            new Metric("contacts", m_Steps > 0 ? (double)m_Contacts / m_Steps : 0.0),
+            new Metric("resets", m_Resets, MetricUnit.Count),
+            new Metric("contacts", m_Steps > 0 ? (double)m_Contacts / m_Steps : 0.0, MetricUnit.Dimensionless),
         };
     }
 }

@@ -13,7 +13,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingThroughput";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "One 1 m cube of 10³ = 1000, 22³ = 10648 or 46³ = 97336 particles (quick run: 1000 only) settling on a floor plane " +
             "under gravity, advanced by one 1/60 s step of exactly 4 substeps (9 Hz, ζ = 0.13, β = 0.5, friction 0.5, no sleeping); " +
             "the body starts at rest touching the floor and is put back there every 60 steps, so every timed step is one of the " +
@@ -27,8 +29,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>None: throughput has no error reference (the accuracy suite plots error against cost), so no accuracy figure.</summary>
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             foreach (int edge in quick ? QuickEdges : Edges)
             foreach (ShapeMatchingClusterLayout layout in new[] { ShapeMatchingClusterLayout.Single, ShapeMatchingClusterLayout.Overlapping })
             foreach (ShapeMatchingMode mode in new[] { ShapeMatchingMode.Rigid, ShapeMatchingMode.Linear, ShapeMatchingMode.Quadratic })

@@ -104,16 +104,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             {
                 // A frequency that could not be measured without a reset (implicit Euler's numerical damping can remove the
                 // oscillation of a stiff coarse beam before two crossings) is left out of 'err' and flagged; a reset is divergence.
-                new Metric(Error, Worst(double.IsNaN(small) || double.IsNaN(large) || r3 > 0, smallErr, largeErr, fErr)),
-                new Metric(SmallTip, smallErr),
-                new Metric(SmallTipEb, small / t.SmallTipEulerBernoulli - 1.0),
-                new Metric(LargeTip, largeErr),
-                new Metric(Frequency, fErr),
-                new Metric(FrequencyMeasured, double.IsNaN(f) ? 0 : 1),
-                new Metric("tip small", small, " m"),
-                new Metric("f1", f, " Hz"),
-                new Metric(Resets, r1 + r2 + r3),
-                new Metric(Particles, setup.Mesh.NodeCount),
+                new Metric(Error, Worst(double.IsNaN(small) || double.IsNaN(large) || r3 > 0, smallErr, largeErr, fErr), MetricUnit.Fraction),
+                new Metric(SmallTip, smallErr, MetricUnit.Fraction),
+                new Metric(SmallTipEb, small / t.SmallTipEulerBernoulli - 1.0, MetricUnit.Fraction),
+                new Metric(LargeTip, largeErr, MetricUnit.Fraction),
+                new Metric(Frequency, fErr, MetricUnit.Fraction),
+                new Metric(FrequencyMeasured, double.IsNaN(f) ? 0 : 1, MetricUnit.Flag),
+                new Metric("tip small", small, MetricUnit.Metre),
+                new Metric("f1", f, MetricUnit.Hertz),
+                new Metric(Resets, r1 + r2 + r3, MetricUnit.Count),
+                new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count),
             };
         }
 

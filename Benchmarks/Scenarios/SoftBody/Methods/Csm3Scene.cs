@@ -125,16 +125,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double fErr = diverged ? double.NaN : double.IsNaN(frequency) ? 1.0 : Relative(frequency, t.UyFrequency);
             return new[]
             {
-                new Metric(Error, Worst(diverged, meanErr, ampErr, fErr)),
-                new Metric(MeanError, meanErr),
-                new Metric(AmplitudeError, ampErr),
-                new Metric(FrequencyError, fErr),
-                new Metric(MeanValue, diverged ? double.NaN : mean, " m"),
-                new Metric(AmplitudeValue, diverged ? double.NaN : amplitude, " m"),
-                new Metric(FrequencyValue, diverged ? double.NaN : frequency, " Hz"),
-                new Metric(SidewaysValue, diverged ? double.NaN : sideways, " m"),
-                new Metric(Resets, resets),
-                new Metric(Particles, setup.Mesh.NodeCount),
+                new Metric(Error, Worst(diverged, meanErr, ampErr, fErr), MetricUnit.Fraction),
+                new Metric(MeanError, meanErr, MetricUnit.Fraction),
+                new Metric(AmplitudeError, ampErr, MetricUnit.Fraction),
+                new Metric(FrequencyError, fErr, MetricUnit.Fraction),
+                new Metric(MeanValue, diverged ? double.NaN : mean, MetricUnit.Metre),
+                new Metric(AmplitudeValue, diverged ? double.NaN : amplitude, MetricUnit.Metre),
+                new Metric(FrequencyValue, diverged ? double.NaN : frequency, MetricUnit.Hertz),
+                new Metric(SidewaysValue, diverged ? double.NaN : sideways, MetricUnit.Metre),
+                new Metric(Resets, resets, MetricUnit.Count),
+                new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count),
             };
         }
 

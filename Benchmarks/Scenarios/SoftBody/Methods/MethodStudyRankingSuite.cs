@@ -13,16 +13,19 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
         public string Name => "MethodStudyRanking";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "Summary of the method study scenes above: a method reaches an error level on all scenes at the largest of its per-scene " +
             "costs to reach it (µs per 1/60 s step of the whole body); 'not reached' when some scene never gets there at the knob values swept.";
 
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(bool quick) => Enumerable.Empty<IScenario>();
+        public IEnumerable<IScenario> Scenarios(RunScope scope) => Enumerable.Empty<IScenario>();
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var scenes = MethodStudyRanking.SceneOrder.ToList();
             if (scenes.Count == 0)
                 return "No method-study scene ran (filter).";

@@ -15,11 +15,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public MethodStudySuite(StudyScene scene) { m_Scene = scene; }
 
         public string Name => m_Scene.Name;
-        public string Description => m_Scene.Description + " " + MethodStudyRanking.CostNote;
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription => m_Scene.Description + " " + MethodStudyRanking.CostNote;
         public string ErrorMetricForPlot => StudyScene.Error;
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             foreach (MethodVariant v in MethodCatalog.Variants)
             foreach (int resolution in v.Resolutions.Length > 0 && !quick ? v.Resolutions.Where(n => n <= m_Scene.MaxResolution) : new[] { 0 })
             foreach (int knob in quick ? v.QuickKnobs : v.Knobs)
@@ -31,8 +34,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string CostLabel => "µs per 1/60 s step of the whole body (all substeps and iterations), median";
         public double Cost(ScenarioOutcome row) => MethodStudyRanking.MicrosecondsPerStep(row);
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             MethodStudyRanking.Record(Name, rows);
             var md = new StringBuilder();
             md.AppendLine($"Cheapest setting of each method that reaches an error ('{StudyScene.Error}') of 1 %, 5 % and 20 % " +

@@ -83,6 +83,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>Sanity of the run, not accuracy: NaN-guard resets over all steps (0 expected).</summary>
-        public IReadOnlyList<Metric> Evaluate() => new[] { new Metric("resets", m_Resets + m_Body.Resets) };
+        public IReadOnlyList<Metric> Evaluate() => new[] { new Metric("resets", m_Resets + m_Body.Resets, MetricUnit.Count) };
     }
 }

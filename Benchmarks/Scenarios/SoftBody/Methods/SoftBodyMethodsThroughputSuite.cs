@@ -62,7 +62,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "SoftBodyMethodsThroughput";
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             "One 1 m jelly cube (E = 10 kPa, ν = 0.45, ρ = 1000 kg/m³, ζ = 0.1) of 10³ = 1000, 22³ = 10648 and 46³ = 97336 nodes (runs only when " +
             "--filter names the suite; quick run: 1000 only), boxes of 6 tetrahedra per cell, settling on a floor plane under gravity " +
             $"(friction 0.5, no sleeping), advanced by one 1/60 s step of exactly {Substeps} substeps " +
@@ -75,7 +77,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>None: throughput has no error reference.</summary>
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(bool quick) => Build(quick ? QuickEdges : Edges);
+        public IEnumerable<IScenario> Scenarios(RunScope scope) => Build(scope == RunScope.Quick ? QuickEdges : Edges);
 
         static IEnumerable<IScenario> Build(int[] edges)
         {
@@ -88,8 +90,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// One line per method: ns per particle-substep at each size and the least-squares slope of log(step time) against
         /// log(N) over the sizes run (step time = ns/item × items per step; 1 = cost linear in N).
         /// </summary>
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             var sizes = new List<int>();
             foreach (ScenarioOutcome r in rows)
                 if (!sizes.Contains(r.Size))

@@ -171,15 +171,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double overshootErr = diverged ? double.NaN : Relative(overshoot, targets.Overshoot);
             return new[]
             {
-                new Metric(Error, Worst(diverged, volumeErr, recoveryErr, overshootErr)),
-                new Metric(VolumeError, volumeErr),
-                new Metric(RecoveryError, recoveryErr),
-                new Metric(OvershootError, overshootErr),
-                new Metric(Recovery, diverged ? double.NaN : recovery, " s"),
-                new Metric(OvershootMetric, diverged ? double.NaN : overshoot),
-                new Metric(Recovered, recovered ? 1 : 0),
-                new Metric(Resets, body.Resets),
-                new Metric(Particles, setup.Mesh.NodeCount),
+                new Metric(Error, Worst(diverged, volumeErr, recoveryErr, overshootErr), MetricUnit.Fraction),
+                new Metric(VolumeError, volumeErr, MetricUnit.Fraction),
+                new Metric(RecoveryError, recoveryErr, MetricUnit.Fraction),
+                new Metric(OvershootError, overshootErr, MetricUnit.Fraction),
+                new Metric(Recovery, diverged ? double.NaN : recovery, MetricUnit.Second),
+                new Metric(OvershootMetric, diverged ? double.NaN : overshoot, MetricUnit.Dimensionless),
+                new Metric(Recovered, recovered ? 1 : 0, MetricUnit.Flag),
+                new Metric(Resets, body.Resets, MetricUnit.Count),
+                new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count),
             };
         }
     }

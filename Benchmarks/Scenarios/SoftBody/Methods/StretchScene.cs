@@ -187,13 +187,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 errors[k] = extensions[k] / targets.Extensions[k] - 1.0;
                 diverged |= double.IsNaN(extensions[k]);
             }
-            var metrics = new List<Metric> { new Metric(Error, Worst(diverged, Array.ConvertAll(errors, Math.Abs))) };
+            var metrics = new List<Metric> { new Metric(Error, Worst(diverged, Array.ConvertAll(errors, Math.Abs)), MetricUnit.Fraction) };
             for (int k = 0; k < Loads.Length; k++)
-                metrics.Add(new Metric(LevelError(k), errors[k]));
+                metrics.Add(new Metric(LevelError(k), errors[k], MetricUnit.Fraction));
             for (int k = 0; k < Loads.Length; k++)
-                metrics.Add(new Metric(LevelExtension(k), extensions[k], " m"));
-            metrics.Add(new Metric(Resets, resets));
-            metrics.Add(new Metric(Particles, setup.Mesh.NodeCount));
+                metrics.Add(new Metric(LevelExtension(k), extensions[k], MetricUnit.Metre));
+            metrics.Add(new Metric(Resets, resets, MetricUnit.Count));
+            metrics.Add(new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count));
             return metrics;
         }
 

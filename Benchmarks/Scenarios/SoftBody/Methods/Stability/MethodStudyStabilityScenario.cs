@@ -97,25 +97,25 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double bound = ExplicitBound(m_CubeInUse, m_Variant.Family);
             var metrics = new List<Metric>
             {
-                new Metric(MaxStep, 1e3 * m_Step.MaxStep, " ms"),
-                new Metric(Capped, m_Step.Capped ? 1 : 0),
-                new Metric(Bound, 1e3 * bound, " ms"),
-                new Metric(Ratio, m_Step.MaxStep / bound),
-                new Metric(Monotone, m_Step.Monotone ? 1 : 0),
-                new Metric(BoundedBelow, m_Step.BoundedBelow ? 1 : 0),
-                new Metric(BoundedAbove, 1e3 * m_Step.BoundedAbove, " ms"),
-                new Metric(FailureReason, (int)m_Step.FailureAbove),
-                new Metric(Runs, m_Step.Runs),
-                new Metric(Steps, m_Step.Steps),
+                new Metric(MaxStep, 1e3 * m_Step.MaxStep, MetricUnit.Millisecond),
+                new Metric(Capped, m_Step.Capped ? 1 : 0, MetricUnit.Flag),
+                new Metric(Bound, 1e3 * bound, MetricUnit.Millisecond),
+                new Metric(Ratio, m_Step.MaxStep / bound, MetricUnit.Dimensionless),
+                new Metric(Monotone, m_Step.Monotone ? 1 : 0, MetricUnit.Flag),
+                new Metric(BoundedBelow, m_Step.BoundedBelow ? 1 : 0, MetricUnit.Flag),
+                new Metric(BoundedAbove, 1e3 * m_Step.BoundedAbove, MetricUnit.Millisecond),
+                new Metric(FailureReason, (int)m_Step.FailureAbove, MetricUnit.Code),
+                new Metric(Runs, m_Step.Runs, MetricUnit.Count),
+                new Metric(Steps, m_Step.Steps, MetricUnit.Count),
             };
             for (int c = 0; c < m_Cases.Length; c++)
             {
                 string label = HardCases.Label(HardCases.All[c]);
-                metrics.Add(new Metric(label, (int)m_Cases[c].Outcome));
-                metrics.Add(new Metric(label + DeviationSuffix, m_Cases[c].Deviation));
-                metrics.Add(new Metric(label + ResetsSuffix, m_Cases[c].Resets));
+                metrics.Add(new Metric(label, (int)m_Cases[c].Outcome, MetricUnit.Code));
+                metrics.Add(new Metric(label + DeviationSuffix, m_Cases[c].Deviation, MetricUnit.Fraction));
+                metrics.Add(new Metric(label + ResetsSuffix, m_Cases[c].Resets, MetricUnit.Count));
             }
-            metrics.Add(new Metric(StudyScene.Particles, Size));
+            metrics.Add(new Metric(StudyScene.Particles, Size, MetricUnit.Count));
             return metrics;
         }
     }

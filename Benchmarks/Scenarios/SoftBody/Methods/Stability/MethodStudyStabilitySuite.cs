@@ -31,7 +31,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string Name => SuiteName;
         public string ErrorMetricForPlot => null;
 
-        public string Description =>
+        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+
+        string LegacyDescription =>
             $"A {StabilityCube.DefaultSize} m cube of {StabilityCube.DefaultCells}³ cells (6 tetrahedra each, " +
             $"{(StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1)} particles) of a stiff material " +
             "(E = 10 MPa, ν = 0.45, ρ = 1100 kg/m³, ζ = 0.1), bottom face pinned, gravity on, started from a 10 % compression along y " +
@@ -51,16 +53,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             "finite, not back), 3 diverged (more resets, or deformed beyond 2 sizes); '… dev' is the final shape deviation over the cube size. " +
             "ns/item: one particle through one step of dt_max (managed .NET, one thread).";
 
-        public IEnumerable<IScenario> Scenarios(bool quick)
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             // The quick run keeps the methods the catalog keeps in its quick run (those with quick knob values).
             foreach (MethodVariant v in MethodCatalog.Variants)
                 if (!quick || v.QuickKnobs.Length > 0)
                     yield return new MethodStudyStabilityScenario(() => Cube, v);
         }
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, bool quick)
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
+            bool quick = scope == RunScope.Quick;
             StabilityCube cube = Cube;
             var md = new StringBuilder();
             md.AppendLine($"Explicit limits of the cube: mass-spring {Ms(cube.MassSpringExplicitStep)}, FEM {Ms(cube.FemExplicitStep)} " +

@@ -10,80 +10,16 @@ using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
-    /// <summary>Writes report.md, results.csv and, with gnuplot, one accuracy-versus-cost and one scaling figure per suite.</summary>
-    static class ReportWriter
+    /// <summary>With gnuplot: one accuracy-versus-cost and one scaling figure per suite, as PNG files beside the report.</summary>
+    static class Figures
     {
         /// <summary>Errors of exactly 0 are drawn at this floor on log axes (and said so in the caption).</summary>
-        const double k_LogFloor = 1e-12;
+        public const double LogFloor = 1e-12;
         /// <summary>gnuplot point types cycled through the series: filled circle, square, triangles, diamond, pentagon.</summary>
         static readonly int[] k_PointTypes = { 7, 5, 9, 11, 13, 15 };
 
-        public static string Write(RunOptions options, List<SuiteResult> suites)
-        {
-            string dir = Path.GetFullPath(options.OutDir);
-            var md = new StringBuilder();
-            md.AppendLine("# Soft Body Dynamics — headless scenario report");
-            md.AppendLine();
-            md.AppendLine($"- Date (UTC): {DateTime.UtcNow:yyyy-MM-dd HH:mm}");
-            md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
-            md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread — not Burst; Burst numbers come from the Unity Performance tests)");
-            md.AppendLine($"- Timing: median of {options.Repeats} timed steps after a warm-up of at least {ScenarioTimer.WarmupSeconds} s and 3 steps that goes on (up to {ScenarioTimer.MaxWarmupSeconds} s) while the fastest step still improves{(options.Quick ? "; quick run (reduced sizes)" : "")}");
-            md.AppendLine();
-
-            var csv = new StringBuilder("suite,scenario,method,size,size_unit,median_ms,min_ms,max_ms,ns_per_item,items_per_s,metric,value\n");
-            bool gnuplot = HasGnuplot();
-            foreach (SuiteResult s in suites)
-            {
-                md.AppendLine($"## {s.Suite.Name}");
-                md.AppendLine();
-                md.AppendLine(s.Suite.Description);
-                md.AppendLine();
-                var metricNames = s.Rows.SelectMany(r => r.Metrics.Select(m => m.Name)).Distinct().ToList();
-                md.AppendLine("| method | size | ms/step | ns/item | items/s | " + string.Join(" | ", metricNames.Select(Cell)) + " |");
-                md.AppendLine("|---|---:|---:|---:|---:|" + string.Concat(metricNames.Select(_ => "---:|")));
-                foreach (ScenarioResult r in s.Rows)
-                {
-                    md.Append($"| {Cell(r.Method)} | {r.Size} {r.SizeUnit} | {r.MedianMs:F3} | {r.NsPerItem:F1} | {Format.Rate(r.ItemsPerSecond)} |");
-                    // A metric the row does not report (NaN) is an empty cell, not "NaN".
-                    foreach (string n in metricNames) md.Append(double.IsNaN(r.MetricValue(n)) ? " – |" : $" {Format.Value(r.MetricValue(n))} |");
-                    md.AppendLine();
-                    foreach (var m in r.Metrics)
-                        csv.AppendLine(string.Join(",", s.Suite.Name, r.Name, Quote(r.Method), r.Size, r.SizeUnit,
-                            F(r.MedianMs), F(r.MinMs), F(r.MaxMs), F(r.NsPerItem), F(r.ItemsPerSecond), Quote(m.Name), F(m.Value)));
-                }
-                md.AppendLine();
-                if (!string.IsNullOrEmpty(s.Summary))
-                    md.AppendLine(s.Summary.TrimEnd()).AppendLine();
-                foreach (ScenarioResult r in s.Rows.Where(r => r.AllocatedBytesPerStep > 0))
-                    md.AppendLine($"- **Warning:** `{r.Method}` (N = {r.Size}) allocated {r.AllocatedBytesPerStep:F0} bytes per Step.");
-                if (s.Rows.Any(r => r.AllocatedBytesPerStep > 0))
-                    md.AppendLine();
-
-                if (gnuplot)
-                {
-                    string pareto = PlotAccuracyVersusCost(dir, s);
-                    string cost = s.Suite is IScenarioSuiteFigure figure ? figure.CostLabel : "ns per item";
-                    if (pareto != null)
-                        md.AppendLine($"![{s.Suite.Name}: {s.Suite.ErrorMetricForPlot} against {cost}]({pareto})").AppendLine()
-                          .AppendLine($"*{s.Suite.ErrorMetricForPlot} (lower is better) against {cost} (left is cheaper); an error of exactly 0 is drawn at {k_LogFloor:E0}.*").AppendLine();
-                    string scaling = PlotScaling(dir, s);
-                    if (scaling != null)
-                        md.AppendLine($"![{s.Suite.Name}: time per item against size]({scaling})").AppendLine()
-                          .AppendLine("*Time per item against problem size (log–log): flat means cost linear in N.*").AppendLine();
-                }
-                else
-                {
-                    md.AppendLine("*Figures skipped: gnuplot not found (the setup script installs Debian's gnuplot-nox).*").AppendLine();
-                }
-            }
-
-            File.WriteAllText(Path.Combine(dir, "results.csv"), csv.ToString());
-            string path = Path.Combine(dir, "report.md");
-            File.WriteAllText(path, md.ToString());
-            return path;
-        }
-
-        static string PlotAccuracyVersusCost(string dir, SuiteResult s)
+        /// <summary>The suite's error metric against its cost, one series per method family; the PNG's file name, or null.</summary>
+        public static string PlotAccuracyVersusCost(string dir, SuiteResult s)
         {
             string metric = s.Suite.ErrorMetricForPlot;
             // A suite without an error reference (pure throughput) names no metric and gets no accuracy figure.
@@ -92,6 +28,9 @@ namespace SoftBodyDynamics.Runner
             var rows = s.Rows.Where(r => r.Metrics.Any(m => m.Name == metric) && double.IsFinite(r.MetricValue(metric))).ToList();
             if (rows.Count == 0) return null;
             string name = $"{s.Suite.Name}-accuracy-vs-cost";
+            // Relative errors are fractions; the figure, like the tables, shows them in percent.
+            bool percent = rows[0].MetricUnit(metric) == MetricUnit.Fraction;
+            double Shown(double v) => percent ? 100.0 * v : v;
             var figure = s.Suite as IScenarioSuiteFigure;
             ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep);
             // One series per method family (the text before the first comma, or the suite's own series), labelled by the rest.
@@ -115,7 +54,7 @@ namespace SoftBodyDynamics.Runner
                     string rest = figure != null
                         ? (k == 0 || k == ordered.Count - 1 ? figure.PointLabel(Outcome(r)) : "")
                         : r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() + $" N={r.Size}" : $"N={r.Size}";
-                    dat.AppendLine($"{F(Cost(r))} {F(Math.Max(k_LogFloor, r.MetricValue(metric)))} \"{rest.Replace("\"", "")}\"");
+                    dat.AppendLine($"{F(Cost(r))} {F(Math.Max(LogFloor, Shown(r.MetricValue(metric))))} \"{rest.Replace("\"", "")}\"");
                 }
                 dat.AppendLine().AppendLine();
                 // Explicit line type per family: the label plots would otherwise use up the colour cycle.
@@ -131,9 +70,9 @@ namespace SoftBodyDynamics.Runner
 set output '{name}.png'
 set title '{s.Suite.Name}: accuracy against cost'
 set xlabel '{costLabel.Replace("'", "")}'
-set ylabel '{metric}'
+set ylabel '{metric}{(percent ? " (%)" : "")}'
 set logscale xy
-set format y '%.0e'
+set format y '{(percent ? "%g" : "%.0e")}'
 set grid
 set key outside right top
 set offsets graph 0.02, graph 0.3, graph 0.05, graph 0.05
@@ -142,7 +81,8 @@ plot {string.Join(", ", plots)}
             return RunGnuplot(dir, name, gp);
         }
 
-        static string PlotScaling(string dir, SuiteResult s)
+        /// <summary>Time per item against N for methods run at several sizes; the PNG's file name, or null.</summary>
+        public static string PlotScaling(string dir, SuiteResult s)
         {
             var groups = s.Rows.GroupBy(r => r.Method).Where(g => g.Select(r => r.Size).Distinct().Count() > 1).ToList();
             if (groups.Count == 0) return null;
@@ -195,25 +135,12 @@ plot {string.Join(", ", plots)}
             return name + ".png";
         }
 
-        static bool HasGnuplot()
+        public static bool HasGnuplot()
         {
             string path = Environment.GetEnvironmentVariable("PATH") ?? "";
             return path.Split(':').Any(d => File.Exists(Path.Combine(d, "gnuplot")));
         }
 
-        static string CpuName()
-        {
-            try
-            {
-                string line = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name"));
-                return line?.Split(':', 2)[1].Trim() ?? "unknown CPU";
-            }
-            catch (IOException) { return "unknown CPU"; }
-        }
-
         static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
-        /// <summary>Text for a Markdown table cell: a literal '|' (as in "max |det R - 1|") would end the cell.</summary>
-        static string Cell(string s) => s.Replace("|", "\\|");
-        static string Quote(string s) => "\"" + s.Replace("\"", "\"\"") + "\"";
     }
 }
