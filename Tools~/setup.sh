@@ -28,6 +28,6 @@ if ! command -v dotnet >/dev/null 2>&1; then
   exit 1
 fi
 export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
-for p in SoftBodyDynamics.Tests.Solvers SoftBodyDynamics.Tests.MathematicsStandIn SoftBodyDynamics.Tests.Compute SoftBodyDynamics.Runner SoftBodyDynamics.MeshWriteBackTiming SoftBodyDynamics.LavapipeTiming SoftBodyDynamics.FluidSurfaceRender; do
+for p in SoftBodyDynamics.Tests.Solvers SoftBodyDynamics.Tests.MathematicsStandIn SoftBodyDynamics.Tests.Runner SoftBodyDynamics.Tests.Compute SoftBodyDynamics.Runner SoftBodyDynamics.MeshWriteBackTiming SoftBodyDynamics.LavapipeTiming SoftBodyDynamics.FluidSurfaceRender; do
   dotnet restore "$ROOT/Tools~/DotNet/$p/$p.csproj" --verbosity quiet >/dev/null
 done

@@ -61,6 +61,9 @@ run_nunit nunit "Tools~/DotNet/SoftBodyDynamics.Tests.Solvers/SoftBodyDynamics.T
 section "NUnit: Unity.Mathematics stand-in conformance"
 run_nunit mathematics-stand-in "Tools~/DotNet/SoftBodyDynamics.Tests.MathematicsStandIn/SoftBodyDynamics.Tests.MathematicsStandIn.csproj"
 
+section "NUnit: headless runner (options, progress, report, summary, units)"
+run_nunit runner "Tools~/DotNet/SoftBodyDynamics.Tests.Runner/SoftBodyDynamics.Tests.Runner.csproj"
+
 section "NUnit: GPU kernels on lavapipe against the CPU solver"
 run_nunit compute "Tools~/DotNet/SoftBodyDynamics.Tests.Compute/SoftBodyDynamics.Tests.Compute.csproj"
 

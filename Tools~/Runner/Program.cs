@@ -32,28 +32,37 @@ namespace SoftBodyDynamics.Runner
                 return 0;
             }
 
+            return Run(options, ScenarioCatalog.Suites, ReportParts.All, Console.Out, Console.Error);
+        }
+
+        /// <summary>
+        /// Runs the plan of <paramref name="suites"/> and <paramref name="parts"/> that <paramref name="options"/> select: tables to
+        /// <paramref name="output"/>, progress lines to <paramref name="progress"/>; returns the exit code.
+        /// </summary>
+        public static int Run(RunOptions options, IEnumerable<IScenarioSuite> suites, IEnumerable<ReportPart> parts, TextWriter output, TextWriter progress)
+        {
             string dir = Path.GetFullPath(options.OutDir);
             Directory.CreateDirectory(dir);
-            RunPlan plan = RunPlan.Build(options);
+            RunPlan plan = RunPlan.Build(options, suites, parts);
             var timings = RunTimings.Load(dir);
             var estimate = new ProgressEstimate(timings, plan.Keys);
             var clock = RunClock.Start();
             var report = new Report(options, dir, plan.Count);
-            Console.Error.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
+            progress.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
 
             int index = 0;
             foreach (PlannedSuite planned in plan.Suites)
             {
                 var suiteResult = new SuiteResult(planned.Suite);
                 report.Suites.Add(suiteResult);
-                Console.WriteLine();
-                Console.WriteLine($"== {planned.Suite.Name}");
-                var table = new TablePrinter(Console.Out, planned.Scenarios.Select(p => p.Scenario));
+                output.WriteLine();
+                output.WriteLine($"== {planned.Suite.Name}");
+                var table = new TablePrinter(output, planned.Scenarios.Select(p => p.Scenario));
                 if (planned.Scenarios.Count > 0)
                     table.PrintHeader();
                 foreach (PlannedScenario p in planned.Scenarios)
                 {
-                    Console.Error.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                    progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
                     long t0 = Stopwatch.GetTimestamp();
                     int repeats = p.Scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
                     ScenarioResult r = ScenarioTimer.Run(p.Scenario, repeats);
@@ -69,17 +78,17 @@ namespace SoftBodyDynamics.Runner
                 suiteResult.Finish(options.Scope, dir);
                 if (!string.IsNullOrEmpty(suiteResult.Summary))
                 {
-                    Console.WriteLine();
-                    Console.WriteLine(suiteResult.Summary.TrimEnd());
+                    output.WriteLine();
+                    output.WriteLine(suiteResult.Summary.TrimEnd());
                 }
                 report.Write(timings);
             }
 
             foreach (ReportPart part in plan.Parts)
             {
-                Console.Error.WriteLine(Progress(index, plan.Count, part.Title, clock, estimate));
-                Console.WriteLine();
-                Console.WriteLine($"== {part.Title}");
+                progress.WriteLine(Progress(index, plan.Count, part.Title, clock, estimate));
+                output.WriteLine();
+                output.WriteLine($"== {part.Title}");
                 long t0 = Stopwatch.GetTimestamp();
                 PartResult result = part.Run(options, dir);
                 double seconds = Seconds(t0);
@@ -93,9 +102,9 @@ namespace SoftBodyDynamics.Runner
 
             report.Complete = true;
             string path = report.Write(timings);
-            Console.WriteLine();
-            Console.WriteLine($"Report written to {path}");
-            Console.Error.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
+            output.WriteLine();
+            output.WriteLine($"Report written to {path}");
+            progress.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
             return report.Parts.Any(p => !p.Succeeded) ? 1 : 0;
         }
 
