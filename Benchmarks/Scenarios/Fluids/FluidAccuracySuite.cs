@@ -31,22 +31,35 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "FluidAccuracy";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            "Dam break after Martin & Moyce 1952 (n² = 2, a = 0.05715 m, Table 2; slab four particles deep between free-slip walls; " +
-            "front = leading edge of particles with ≥ 4 neighbours) from release to T = t·√(2g/a) = 3.4, for the weakly compressible " +
-            "solver (WCSPH, Tait γ = 7, artificial viscosity α = 0.05, CFL 0.4, speed of sound c₀ a multiple of √(2g·2a) = 1.50 m/s) and " +
-            "position-based fluids (PBF, CFL 0.4, 2–8 iterations), at a/10 and a/20, and the cheapest setting of each at a/40. Front error = RMS of Z_sim − Z_data over the table's " +
-            "15 points, without and with the best time shift in [0, 0.2] (the gate's opening time; the experiment's own band is ±0.07 in T); " +
-            "late front speed = least-squares dZ/dT over 2 ≤ T ≤ 3.33 (the inviscid ideal is 2). " +
-            "Density error = mean |ρ/ρ₀ − 1| of the bulk over the run's frames. An item is one particle-substep, so ns per item is the " +
-            "cost of moving one particle through one substep of that solver. Hydrostatic column: 0.3 × 0.4 × 0.3 m of water at Δx = 2.5 cm, " +
-            "settled for the stated time, then measured (interior pressure, 2h from walls, floor and surface, against ρ₀g(H − y); density " +
-            "error, kinetic energy, surface drift). " +
-            "Droplet: a 10 cm cube (1000 particles) without gravity rounding for 2 s under flocking cohesion or Akinci et al. 2013 cohesion and " +
-            "curvature; sphericity = smallest over largest width of the particle cloud over 100 directions (1 for a ball, 0.60 for the cube). " +
-            "Hard cases: 1000 particles (one for the isolated particle) in a 0.4 m box at Δx = 2 cm, with the step report's counters summed over the run.";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "How close each fluid solver and setting comes to a dam-break experiment, a hydrostatic column and a rounding droplet, at what cost per " +
+                      "particle-substep, and whether it survives hard cases.",
+            Body = $"Dam break: Martin & Moyce's n² = 2 column (a = {MartinMoyce1952.ColumnWidth} m wide, 2a high) in a 6a × 3a tank, a slab four particles deep between " +
+                   $"free-slip walls, at a/{string.Join(", a/", Resolutions)}; hydrostatic column: 0.3 × 0.4 × 0.3 m at Δx = 2.5 cm; droplet: a 10 cm cube of 1000 particles; " +
+                   "hard cases: 1000 particles in a 0.4 m box at Δx = 2 cm.",
+            Material = $"Water. WCSPH: Tait γ = 7, artificial viscosity α = {FluidParameters.Default.ArtificialViscosity}, c₀ = {string.Join(", ", SoundMultiples)}·v, " +
+                       $"v = √(2g·2a) = {DamBreakScenario.ReferenceSpeed:0.00} m/s (column: 10·√(2gH); droplet: 5 m/s). PBF: {string.Join(", ", Iterations)} iterations " +
+                       $"(column: {string.Join(", ", HydrostaticIterations)}). CFL {FluidParameters.Default.CflNumber}.",
+            Load = $"Gravity. Dam break: released at rest, run to T = t√(2g/a) = {DamBreakScenario.EndT} in {1000 * DamBreakScenario.FrameSeconds} ms frames; " +
+                   "column: settled 10 s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion, " +
+                   $"flocking ({string.Join(", ", FlockingWeights)}/s²) or Akinci (γ = {string.Join(", ", AkinciTensions)}); hard cases: each its own.",
+            Reference = $"Dam break: Martin & Moyce's Table 2 front ({MartinMoyce1952.T.Length} points, T = {MartinMoyce1952.T[0]}…{DamBreakScenario.LastTableT}); " +
+                        "column: hydrostatic p = ρ₀g(H − y) in the interior (2h from walls, floor and surface); droplet: a ball (sphericity 1); hard cases: finite and in the box.",
+            Metric = "One item is one particle-substep (a step is a whole run). Front error = RMS of Z_sim − Z_data over the table, Z = x/a, front = leading edge of the " +
+                     "particles with ≥ 4 neighbours; 'density error' = mean |ρ/ρ₀ − 1| of the bulk over the run's frames.",
+            Notes = new[]
+            {
+                "Dam break: '(shifted)' uses the best time shift in [0, 0.2] (the gate's opening; the experiment's own band is ±0.07 in T); 'late front speed' = " +
+                $"least-squares dZ/dT over {DamBreakScenario.LateT} ≤ T ≤ {DamBreakScenario.LastTableT} (inviscid ideal 2); a/{FinestResolution} runs only the cheapest setting of each solver.",
+                "Column: pressure gradient, L2 and scatter errors against ρ₀g(H − y), 'zero-pressure depth' where the fitted line reaches 0 below the top, 'surface drift' " +
+                $"from 1 s on. Droplet: 'sphericity' = smallest over largest width of the cloud over {DropletScenario.DirectionCount} directions (the cube: 0.60); " +
+                $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
+                "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
+                "Quick run: a/10 with one setting per solver, the WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
+            },
+            Details = "fluids.md#validation-and-the-study",
+        };
 
         public string ErrorMetricForPlot => "front RMS error (shifted)";
 

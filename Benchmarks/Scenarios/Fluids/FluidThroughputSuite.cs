@@ -16,15 +16,23 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "FluidThroughput";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            "A cube of water at Δx = 2 cm resting in a box (weakly compressible, c₀ = 20 m/s, α = 0.05, one viscosity iteration, h = 2Δx: " +
-            "26 neighbours on the rest lattice, 27–29 in the settled block), single-threaded .NET on this machine. 'WCSPH substep (FluidSolver.Step)' " +
-            "is one CFL substep through the solver, so its items/s are particle-substeps per second. 'WCSPH substep, staged' runs the same substep " +
-            "pass by pass in the solver's order (checked bit for bit against FluidSolver.Step at setup) with a stopwatch between stages; each stage's " +
-            "ns per particle is the median over the row's steps. 'pack/unpack' gathers the particle arrays into entity order through a fixed random " +
-            "permutation and scatters them back: the extra cost of one entity per particle. Bytes per particle = all solver arrays + the cell table.";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "What one weakly compressible SPH substep costs per particle from 10k to 1M particles, stage by stage, with the cost of entity-order pack/unpack and the memory per particle.",
+            Body = $"A cube of water of {string.Join(", ", Array.ConvertAll(Sides, n => $"{n}³ = {(n * n * n).ToString("N0", CultureInfo.InvariantCulture)}"))} particles at Δx = 2 cm, resting in a box.",
+            Material = "Weakly compressible: c₀ = 20 m/s, α = 0.05, one viscosity iteration, h = 2Δx (26 neighbours on the rest lattice, 27–29 in the settled block).",
+            Load = "Gravity, at rest; each timed step is one CFL substep, single-threaded managed .NET on this machine.",
+            Reference = "none (cost only); the staged row is checked bit for bit against FluidSolver.Step at setup ('same bits as FluidSolver.Step').",
+            Metric = "One item is one particle through one substep (pack/unpack: one particle gathered and scattered back), so items/s is particle-substeps per second. " +
+                     "The staged row gives each stage's ns per particle (median over its steps); " +
+                     "'bytes per particle' = all solver arrays + the cell table.",
+            Notes = new[]
+            {
+                "'pack/unpack' gathers the particle arrays into entity order through a fixed random permutation and scatters them back: the extra cost of one entity per particle.",
+                $"Quick run: {Sides[0]}³ particles only.",
+            },
+            Details = "fluids.md#throughput-fluidthroughput",
+        };
 
         public string ErrorMetricForPlot => null;
 

@@ -17,19 +17,26 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingConservation";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            $"A {ShapeMatchingConservationScenario.BodySize} m cube of {ShapeMatchingConservationScenario.Edge}³ particles " +
-            $"({ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, " +
-            $"{ShapeMatchingConservationScenario.Substeps} substeps per 1/60 s step, no gravity, no colliders), as one cluster or 8 overlapping 4³ clusters, " +
-            "every particle jittered by up to ±20 % of the spacing, spinning at 3 rad/s about a seeded axis and drifting at 0.5 m/s with ±0.1 m/s of " +
-            $"seeded noise on every velocity, for {SpinningBlob.Steps} steps ({SpinningBlob.Steps / 60.0:0.#} s). Nothing outside acts on it: the goals' pull " +
-            "is made momentum- and torque-free and the damping leaves rigid motion alone, so linear momentum P and angular momentum L about the centre " +
-            $"of mass must stay at their initial values. '{MomentumDrift}' and '{AngularMomentumDrift}' are the largest drifts over the run: float32 " +
-            "round-off of the velocity increments (ShapeMatchingMomentumTests holds them to 1e-5 and 1e-3 over 1000 steps). Conservation is not " +
-            "accuracy: a solver can conserve both and still be far from the reference, which is why these live in their own table. " +
-            "Quick run: linear, both layouts.";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "Whether a free, spinning shape-matching body keeps its linear and angular momentum, for each mode and cluster layout.",
+            Body = $"A {ShapeMatchingConservationScenario.BodySize} m cube of {ShapeMatchingConservationScenario.Edge}³ particles, as one cluster or 8 overlapping " +
+                   $"{ShapeMatchingBenchmarkBody.ClusterEdge}³ clusters, every particle jittered by up to ±20 % of the spacing.",
+            Material = $"{ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, " +
+                       $"{ShapeMatchingConservationScenario.Substeps} substeps per 1/60 s step; rigid, linear or quadratic goals.",
+            Load = $"Spinning at {SpinningBlob.AngularSpeed} rad/s about a seeded axis and drifting at {SpinningBlob.DriftSpeed} m/s, ±0.1 m/s of seeded noise on every velocity; " +
+                   $"no gravity, no colliders; {SpinningBlob.Steps} steps ({SpinningBlob.Steps / 60.0:0.#} s).",
+            Reference = "The initial momentum P₀ and angular momentum L₀ about the centre of mass: nothing acts from outside (the goals' pull is momentum- and torque-free, " +
+                        "the damping spares rigid motion).",
+            Metric = $"One item is one particle-step (all substeps). '{MomentumDrift}' = max |P − P₀| / Σ m|v|₀ and '{AngularMomentumDrift}' = max |L − L₀| / |L₀| over the run: " +
+                     "float32 round-off (ShapeMatchingMomentumTests holds them to 1e-5 and 1e-3 over 1000 steps).",
+            Notes = new[]
+            {
+                "Conservation is not accuracy: a solver can conserve both and still be far from the reference.",
+                "Quick run: linear goals, both layouts.",
+            },
+            Details = "accuracy.md#conservation",
+        };
 
         /// <summary>None: drift is not an error against a reference, so no accuracy figure.</summary>
         public string ErrorMetricForPlot => null;

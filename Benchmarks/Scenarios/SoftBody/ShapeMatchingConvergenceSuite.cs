@@ -55,29 +55,28 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingConvergence";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            $"A {ConvergenceStudy.BodySize} m cube of {ConvergenceStudy.Edge}³ = {ConvergenceStudy.Edge * ConvergenceStudy.Edge * ConvergenceStudy.Edge} particles " +
-            $"({ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, no gravity), " +
-            "as one cluster or as 8 overlapping 4³ clusters, squashed to 0.8 of its height (x, z stretched to keep the volume), twisted by 0.3 rad " +
-            "and jittered by ±5 % of the spacing, released at rest and followed for 1 s at 1/60 s steps with 1, 2, 4, 8, 16 and 32 substeps " +
-            "(exactly: the substep phase limit is lifted; quick run: 1, 4, 16 for two families). " +
-            $"'{TrajectoryError}' is the RMS over particles and over the 60 frames of |x_solver − x_ref| over the body size, where x_ref is a " +
-            "float64 classical RK4 integration of the continuous model the solver discretises, ẍᵢ = ω² P(g(x) − x)ᵢ − 2ζω (ẋᵢ − uᵢ) " +
-            "(goals g of the current positions in the same mode and layout, P the momentum- and torque-free projection, u the body's rigid velocity), " +
-            "from the same float32 start: the error is the discretisation error of the substep, and it must fall as the cost grows. " +
-            $"'{Order}' is the observed order against the previous substep count, ln(e_prev/e)/ln(n/n_prev): the substep is first order " +
-            "(its velocity lags half a substep and the goals are taken at the start of the substep), so it tends to 1 as ωh → 0. " +
-            $"'{ReferenceChange}' is how much the reference moves when its RK4 step (1/{60 * 2 * ConvergenceStudy.ReferenceStepsPerFrame} s) is halved, " +
-            "an upper bound of its own error (Richardson: ≈ 15× its error for a 4th-order method): it must be far below every solver error. " +
-            $"'{Phase}' is ωh per substep. '{FrequencyError}' and '{DampingError}' come from a separate free oscillation (no gravity) of the body's " +
-            "fully resisted mode: every particle displaced along x by 2 % of the size times a pattern of its x plane that no cluster's goals can follow, " +
-            "so the continuous model is exactly ÿ = −ω²y − 2ζωẏ; frequency and damping ratio are fitted from the sampled amplitude by linear prediction " +
-            "(Prony, exact for a damped oscillation) and compared with the parameters. The solver's substep has the oscillator's exact eigenvalues, " +
-            "so these must be float32 round-off (≈ 1e-6) at every substep count. Quadratic goals on 4-plane overlapping clusters follow every such " +
-            "pattern (no fully resisted mode of that form exists), so that family has no frequency columns. One item is one particle-step " +
-            "(a particle through a whole step, all substeps included), so ns/item grows with the substep count.";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "How far a released shape-matching body's trajectory is from the continuous model's, and how fast that error falls as substeps are added, for each mode and cluster layout.",
+            Body = $"A {ConvergenceStudy.BodySize} m cube of {ConvergenceStudy.Edge}³ = {ConvergenceStudy.Edge * ConvergenceStudy.Edge * ConvergenceStudy.Edge} particles, " +
+                   $"as one cluster or 8 overlapping {ShapeMatchingBenchmarkBody.ClusterEdge}³ clusters; no gravity, no contacts.",
+            Material = $"{ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}; rigid, linear or quadratic goals; " +
+                       $"the substep phase limit lifted, so a row takes exactly its {string.Join(", ", SubstepCounts)} substeps per 1/60 s step.",
+            Load = $"Squashed to {ConvergenceRelease.HeightFactor} of its height (volume kept), twisted by {ConvergenceRelease.Twist} rad, jittered by ±{ConvergenceRelease.JitterFraction * 100} % " +
+                   $"of the spacing, released at rest and followed for {ConvergenceRelease.Frames} frames of 1/60 s.",
+            Reference = "A float64 classical RK4 integration of the continuous model ẍᵢ = ω² P(g(x) − x)ᵢ − 2ζω (ẋᵢ − uᵢ) from the same float32 start, " +
+                        $"at 1/{60 * 2 * ConvergenceStudy.ReferenceStepsPerFrame} s; for 'f/f0-1' and 'zeta/zeta0-1', the parameters.",
+            Metric = $"One item is one particle-step (all substeps), so ns/item grows with the substep count. '{TrajectoryError}' = RMS over particles and frames of |x_solver − x_ref| / body size; " +
+                     $"'{Order}' = ln(e_prev/e)/ln(n/n_prev), tending to 1; '{Phase}' = ωh per substep; '{ReferenceChange}' = the reference's change when its RK4 step is halved " +
+                     "(bounds its error; must be far below every solver error).",
+            Notes = new[]
+            {
+                $"'{FrequencyError}', '{DampingError}': frequency and damping ratio of a separate free oscillation of the fully resisted mode (fitted by Prony) over the parameters, " +
+                "minus 1; exact but for float32 round-off (≈ 1e-6). Quadratic goals on 4³ clusters have no such mode, so no values.",
+                $"Quick run: {string.Join(", ", QuickSubstepCounts)} substeps for rigid (1 cluster) and linear (4³ clusters), reference at 1/{60 * 2 * QuickReferenceStepsPerFrame} s.",
+            },
+            Details = "accuracy.md#convergence-error-against-cost",
+        };
 
         public string ErrorMetricForPlot => TrajectoryError;
 

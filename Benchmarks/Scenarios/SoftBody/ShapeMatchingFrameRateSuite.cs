@@ -45,24 +45,29 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingFrameRate";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            $"The Jelly, Rubber and Clay presets (ShapeMatchingMaterial; Clay with its plasticity) on a {FrameRateStudy.BodySize} m cube of " +
-            $"{FrameRateStudy.Edge}³ particles with overlapping 4³ clusters, stepped at 30, 60 and 120 Hz with 1, 2, 4, 8, 16 and 32 substeps " +
-            "requested and the default substep phase limit (0.5 rad), so the solver takes at least what ωh ≤ 0.5 needs: 'substeps' is the count " +
-            "it took, 'wh' its ωh (quick run: Rubber, 1 and 4). Rest: the body starts in its rest shape touching a floor plane, falls under " +
-            "gravity and settles (sleeping off; until its centre height varies by < 1e-4 of the sag within 0.5 s, 2–8 s); 'height/h0' is its " +
-            "centre height over the dt → 0 one, 'sag/sag0' its sag (drop of the centre from its undeformed height) over the dt → 0 sag, and " +
-            "'sag err' = |sag/sag0 − 1| is plotted against cost. The dt → 0 rest is the solver's own Richardson extrapolation (second order) from three " +
-            "runs at 1/120 s steps and ωh ≈ 0.2, 0.1, 0.05 (the float64 reference has no contacts). The rule predicts the sag: at rest a substep keeps x when h·a + α(g − x)/h + contact = 0, " +
-            "the continuous model when a + ω²(g − x) + contact = 0, so the discrete body rests like the continuous one with ω² → α/h² and " +
-            "sag/sag0 = (ωh)²/α ≈ 1 + ζωh + (1/12 + ζ²/3)(ωh)² ('pred', 'sag/pred-1'; exact for small sag, up to (sag0/size)·(pred − 1) beyond; " +
-            "not for plastic Clay, whose rest shape flows). 'volume' is det(A_pq A_qq⁻¹) of the body at rest, 'vol/vol0-1' against the dt → 0 one. " +
-            "Wobble: the same body without gravity, displaced along its fully resisted mode and released; 'f/f0-1' and 'zeta/zeta0-1' are the " +
-            "fitted frequency and damping ratio against the preset's (above the Nyquist frequency, Rubber at 30 Hz, the fit's aliased phase is " +
-            "unfolded to the branch nearest the preset's frequency), 'f tol' and 'zeta tol' the tolerances float32 round-off and the fit allow. " +
-            "'plastic' counts plastic updates of the rest run (Clay yields under its own weight).";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = $"Whether each preset ({string.Join(", ", Presets)}) rests, sags and wobbles the same at every frame rate ({string.Join(", ", Rates)} Hz) " +
+                      "and substep count, and what that costs.",
+            Body = $"A {FrameRateStudy.BodySize} m cube of {FrameRateStudy.Edge}³ particles with overlapping {ShapeMatchingBenchmarkBody.ClusterEdge}³ clusters.",
+            Material = "The ShapeMatchingMaterial presets, Clay with its plasticity; " +
+                       $"{string.Join(", ", RequestedSubsteps)} substeps requested per step, and at least what the default phase limit ωh ≤ {ShapeMatchingParameters.Default.MaxSubstepPhase} rad needs.",
+            Load = "Rest: from its rest shape on a floor plane, under gravity until the centre height varies by < 1e-4 of the sag within 0.5 s (2–8 s; no sleeping). " +
+                   "Wobble: no gravity, released along its fully resisted mode.",
+            Reference = "Rest: the solver's own dt → 0 limit (second-order Richardson from three runs at 1/120 s steps and ωh ≈ 0.2, 0.1, 0.05). " +
+                        "Wobble: the preset's frequency and damping ratio.",
+            Metric = $"One item is one particle-step (all substeps); the figure's cost is µs per particle per simulated second. '{Substeps}' = substeps taken, '{Phase}' = ωh of one; " +
+                     $"'…0' = the dt → 0 value; sag = drop of the centre from its undeformed height; '{SagError}' = |sag/sag0 − 1| (plotted).",
+            Notes = new[]
+            {
+                $"'{PredictedSag}': the sag ratio the discretisation rule predicts ((ωh)²/α), '{SagVersusPrediction}' the sag against it (not for plastic Clay, whose rest shape flows); " +
+                $"'{Volume}' = det(A_pq A_qq⁻¹) at rest, '{VolumeDeviation}' against the dt → 0 one.",
+                $"'{FrequencyError}', '{DampingError}': the fitted wobble against the preset's (aliased phase unfolded above Nyquist: Rubber at 30 Hz), within '{FrequencyTolerance}', " +
+                $"'{DampingTolerance}' (float32 and fit); '{PlasticUpdates}': plastic updates of the rest run (Clay yields under its weight).",
+                $"Quick run: {string.Join(", ", s_QuickPresets)} at {string.Join(" and ", s_QuickSubsteps)} substeps.",
+            },
+            Details = "accuracy.md#frame-rate-the-same-material-at-30-60-and-120-hz",
+        };
 
         public string ErrorMetricForPlot => SagError;
 

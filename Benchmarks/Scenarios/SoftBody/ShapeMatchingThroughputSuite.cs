@@ -13,18 +13,25 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "ShapeMatchingThroughput";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "What one shape-matching substep costs per particle, from 1k to 100k particles, for each mode and cluster layout.",
+            Body = $"A {ShapeMatchingThroughputScenario.BodySize} m cube of {Sizes(Edges)} particles, as one cluster ('1 cluster') or as overlapping " +
+                   $"{ShapeMatchingBenchmarkBody.ClusterEdge}×{ShapeMatchingBenchmarkBody.ClusterEdge}×{ShapeMatchingBenchmarkBody.ClusterEdge}-point clusters sharing half their width " +
+                   "('4^3 clusters': an interior particle is in 8, so a particle-iteration costs about 8 cluster visits).",
+            Material = $"{ShapeMatchingBenchmarkBody.Frequency} Hz, ζ = {ShapeMatchingBenchmarkBody.DampingRatio}, β = {ShapeMatchingBenchmarkBody.Beta}, " +
+                       $"friction {ShapeMatchingBenchmarkBody.Friction}, no sleeping; rigid, linear or quadratic goals.",
+            Load = $"Gravity, settling on a floor plane from rest; one 1/60 s step of exactly {ShapeMatchingThroughputScenario.Substeps} substeps. The body is put back every " +
+                   $"{ShapeMatchingThroughputScenario.CycleSteps} steps, so every timed step is in the first second of settling.",
+            Reference = "none (cost only).",
+            Metric = "One item is one particle-iteration (a particle through one substep: predict, cluster solve, floor contact, update), so items/s is particle-iterations per second. " +
+                     "'resets': NaN-guard resets (0 expected); 'contacts': mean particles touching the floor (at least the bottom layer, edge²).",
+            Notes = new[] { $"Quick run: {Sizes(QuickEdges)} particles only." },
+            Details = "benchmarks.md#shapematchingthroughput-cost-per-particle-iteration",
+        };
 
-        string LegacyDescription =>
-            "One 1 m cube of 10³ = 1000, 22³ = 10648 or 46³ = 97336 particles (quick run: 1000 only) settling on a floor plane " +
-            "under gravity, advanced by one 1/60 s step of exactly 4 substeps (9 Hz, ζ = 0.13, β = 0.5, friction 0.5, no sleeping); " +
-            "the body starts at rest touching the floor and is put back there every 60 steps, so every timed step is one of the " +
-            "first second of settling. " +
-            "One item is one particle-iteration (a particle through one substep: predict, cluster solve, floor contact, update), " +
-            "so items per step = particles × 4 and items/s is particle-iterations per second. '1 cluster' matches the whole body at " +
-            "once; '4^3 clusters' uses overlapping 4×4×4-point clusters sharing half their width (an interior particle is in 8 clusters, " +
-            "so each particle-iteration costs about 8 cluster visits). The metrics only check the timed run: NaN-guard resets " +
-            "(0 expected) and the mean number of particles in floor contact (at least the bottom layer, edge²).";
+        /// <summary>"10³ = 1000, 22³ = 10648": the particle counts of lattice edges.</summary>
+        static string Sizes(int[] edges) => string.Join(", ", System.Array.ConvertAll(edges, e => $"{e}³ = {e * e * e}"));
 
         /// <summary>None: throughput has no error reference (the accuracy suite plots error against cost), so no accuracy figure.</summary>
         public string ErrorMetricForPlot => null;

@@ -78,15 +78,25 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             };
         }
 
-        public override string Description =>
-            $"A {Length} m beam of {Thickness}×{Thickness} m cross-section ({Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra, " +
-            $"{(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; the variants swept in resolution use 8n×n×n cells, n = cells across " +
-            "in the method's label), soft rubber (E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³), its x = 0 face pinned. " +
-            $"Static tip deflection (the mean y of the tip face, averaged over the last period of the reference's first mode of {StaticTime} s with ζ = {StaticDampingRatio}) under " +
-            $"{SmallLoad} g ('{SmallTip}': against the reference, '{SmallTipEb}': signed, against Euler–Bernoulli qL⁴/(8EI)) and under {LargeLoad} g " +
-            $"('{LargeTip}', geometrically nonlinear: against the reference only); first bending frequency from the zero crossings of the tip " +
-            $"oscillating about its sag under {SmallLoad} g for {OscillationTime} s with ζ = 0.01 ('{Frequency}'). " + CantileverTargets.Source +
-            $" '{Error}' = the worst of the three errors (of the two static ones when the free run did not oscillate enough to measure a frequency: '{FrequencyMeasured}' = 0). Shape matching's frequency is calibrated by ShapeMatchingCalibration with L = L_beam²/h.";
+        public override SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "What each method costs to match a clamped rubber beam's static tip sag under a small and a large load and its first bending frequency.",
+            Body = $"A {Length} m beam of {Thickness}×{Thickness} m section, {Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra " +
+                   $"({(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; rows swept in resolution: 8n×n×n cells, n = cells across in the label), its x = 0 face pinned.",
+            Material = $"Soft rubber ({MaterialText(Material)}); ζ = {StaticDampingRatio} for the static runs, 0.01 for the free run. " +
+                       "Shape matching's frequency comes from ShapeMatchingCalibration with L = L_beam²/h.",
+            Load = $"Gravity × {SmallLoad} and × {LargeLoad}, {StaticTime} s each, the tip averaged over the last period of the reference's first mode; " +
+                   $"then a free oscillation about the sag under {SmallLoad} g for {OscillationTime} s.",
+            Reference = "Float64 FEM (Q2 hexahedra, Neo-Hookean, Newton statics, inverse iteration for the frequency) at " +
+                        $"{string.Join(", ", CantileverTargets.ReferenceResolutions)} elements across, Richardson-extrapolated; Euler–Bernoulli qL⁴/(8EI) for '{SmallTipEb}'.",
+            Metric = $"'{Error}' = the worst of '{SmallTip}', '{LargeTip}' (geometrically nonlinear) and '{Frequency}' (first bending frequency from the tip's upward crossings), " +
+                     $"each relative to the reference; '{SmallTipEb}' is signed; 'tip small' (m) and 'f1' (Hz) are the raw values.",
+            Notes = new[]
+            {
+                $"'{FrequencyMeasured}' = 0: the free run did not oscillate through two upward crossings (implicit Euler's numerical damping), so '{Error}' is the worse static error.",
+            },
+            Details = "choosing-a-method.md#cantilever-methodstudycantilever",
+        };
 
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build)
         {

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -94,20 +95,32 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             };
         }
 
-        public override string Description =>
-            $"The Turek–Hron CSM3 beam made 3-D: {Length} m long, {Height}×{Width} m square section ({Cells.x}×{Cells.y}×{Cells.z} cells of 6 " +
-            $"tetrahedra, {(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; the variants swept in resolution use 17.5n×n×n cells, " +
-            $"n = cells across in the method's label, up to n = {MaxResolution}), E = 1.4 MPa, ν = 0.4, ρ = 1000 kg/m³, no damping (ζ = 0), its x = 0 face pinned, " +
-            $"released from rest under g = {Gravity} m/s² (−y) for {Duration:0.#} s ({Frames} frames of 1/60 s). Point A = the mean of the tip " +
-            "face's nodes; its u_y history gives, cycle by cycle (OscillationStatistics: cycles cut at upward crossings of the mid-level, " +
-            $"parabola-refined extremes), the mean ('{MeanError}'), the amplitude ('{AmplitudeError}') and the frequency ('{FrequencyError}'), " +
-            $"each against the float64 reference of the same 3-D beam measured the same way; '{Error}' = the worst of the three. A tip that " +
-            "completes no cycle gets the mean and amplitude of its whole record and a frequency error of 100 %. " +
-            $"'{SidewaysValue}' = the tip's largest sideways (z) excursion: the square section's y and z bending are degenerate, the continuum " +
-            "stays planar (the reference under an extra 1e-4 g along z follows with z/u_y = 1e-4 throughout, no growth), but a tetrahedral " +
-            "mesh that is not mirror-symmetric in z couples them and the swing can beat into sideways bending (longer, smaller cycles). " +
-            Csm3Targets.Get(Material).Summary +
-            " Shape matching's frequency is calibrated by ShapeMatchingCalibration with L = L_beam²/h.";
+        public override SuiteDefinition Definition
+        {
+            get
+            {
+                Csm3Targets t = Csm3Targets.Get(Material);
+                return new SuiteDefinition
+                {
+                    Purpose = "What each method costs to reproduce the undamped swing of the Turek–Hron CSM3 beam made 3-D: the mean, amplitude and frequency of its tip.",
+                    Body = $"A {Length} m beam of {Height}×{Width} m square section, {Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra " +
+                           $"({(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; rows swept in resolution: 17.5n×n×n cells, up to n = {MaxResolution}), its x = 0 face pinned.",
+                    Material = $"{MaterialText(Material)}, no damping (ζ = {Number(Material.DampingRatio)}). " +
+                               "Shape matching's frequency comes from ShapeMatchingCalibration with L = L_beam²/h.",
+                    Load = $"Released from rest under g = {Gravity} m/s² (−y), followed for {Duration:0.#} s ({Frames} frames of 1/60 s).",
+                    Reference = "Float64 FEM of the same 3-D beam (Q2 hexahedra, St Venant–Kirchhoff, Newmark), extrapolated in mesh and step, measured the same way: " +
+                                $"u_y = {Number(t.UyMean * 1e3)} ± {Number(t.UyAmplitude * 1e3)} mm at {t.UyFrequency.ToString("0.0000", CultureInfo.InvariantCulture)} Hz.",
+                    Metric = $"'{Error}' = the worst of '{MeanError}', '{AmplitudeError}' and '{FrequencyError}': point A's (the tip face's mean) u_y mean, amplitude " +
+                             "and frequency, cycle by cycle, relative to the reference; a tip with no complete cycle has a frequency error of 100 %.",
+                    Notes = new[]
+                    {
+                        $"'{SidewaysValue}': the tip's largest sideways (z) excursion. The continuum stays planar, but a tetrahedral mesh that is not mirror-symmetric " +
+                        "in z couples y and z bending, and the swing can beat into z (its y cycles then come out longer and smaller).",
+                    },
+                    Details = "choosing-a-method.md#the-csm3-beam-in-3-d-methodstudycsm3",
+                };
+            }
+        }
 
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build) =>
             Measure(setup, build, Csm3Targets.Get(setup.Material));

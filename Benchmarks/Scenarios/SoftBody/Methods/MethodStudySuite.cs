@@ -15,9 +15,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public MethodStudySuite(StudyScene scene) { m_Scene = scene; }
 
         public string Name => m_Scene.Name;
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
 
-        string LegacyDescription => m_Scene.Description + " " + MethodStudyRanking.CostNote;
+        /// <summary>The scene's definition, with how cost is counted: what one item is in its metric line, the rest as its first note.</summary>
+        public SuiteDefinition Definition
+        {
+            get
+            {
+                SuiteDefinition d = m_Scene.Definition;
+                d.Metric = MethodStudyRanking.ItemNote + " " + d.Metric;
+                var notes = new List<string> { MethodStudyRanking.CostNote };
+                if (d.Notes != null)
+                    notes.AddRange(d.Notes);
+                d.Notes = notes.ToArray();
+                return d;
+            }
+        }
+
         public string ErrorMetricForPlot => StudyScene.Error;
 
         public IEnumerable<IScenario> Scenarios(RunScope scope)
@@ -53,12 +66,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Error thresholds of the ranking (fractions).</summary>
         public static readonly double[] Thresholds = { 0.01, 0.05, 0.20 };
 
-        /// <summary>How cost is counted, for the descriptions.</summary>
+        /// <summary>What one item of a method-study row is, for the definitions' metric line.</summary>
+        public const string ItemNote =
+            "One item is one particle through one 1/60 s step of the scene (all substeps and iterations): ns/item is the cost per particle per step.";
+
+        /// <summary>How cost is counted, for the definitions' notes.</summary>
         public const string CostNote =
-            "One item is one particle through one 1/60 s step of the scene (all substeps and iterations): ns/item is the cost per particle " +
-            "per step, the median of the timed steps after warm-up (managed .NET, one thread); the figure and the ranking count µs per step " +
-            "of the whole body (ns/item × particles), so that finer meshes cost more. '" + StudyScene.Error + "' is the worst of the " +
-            "scene's relative errors; NaN = the method diverged or the guard reset it.";
+            "Cost in the figure and the ranking: µs per step of the whole body (ns/item × '" + StudyScene.Particles + "'), so finer meshes cost more; " +
+            "an error of – (NaN) means the method diverged or the guard reset it.";
 
         static readonly Dictionary<string, IReadOnlyList<ScenarioOutcome>> s_Scenes = new Dictionary<string, IReadOnlyList<ScenarioOutcome>>();
 

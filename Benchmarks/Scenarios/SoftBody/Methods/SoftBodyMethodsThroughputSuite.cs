@@ -62,17 +62,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "SoftBodyMethodsThroughput";
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "What one substep of each soft-body method costs per particle on a jelly cube of 1k to 100k nodes, and how that cost scales with N.",
+            Body = $"A {SoftBodyMethodsThroughputScenario.BodySize} m cube of {Sizes(Edges)} nodes, 6 tetrahedra per cell; shape matching with overlapping clusters {ClusterCells} cells wide.",
+            Material = $"Jelly ({StudyScene.MaterialText(ElasticMaterial.Jelly)}, ζ = {ElasticMaterial.Jelly.DampingRatio}); floor friction 0.5, no sleeping.",
+            Load = $"Gravity, settling on a floor plane from rest (put back every {SoftBodyMethodsThroughputScenario.CycleSteps} steps); one 1/60 s step of exactly {Substeps} substeps " +
+                   $"({ExplicitSubsteps} for the symplectic Euler variants, whose stable substep shrinks with the cell), implicit CG capped at {CgIterations} iterations per substep.",
+            Reference = "none (cost only).",
+            Metric = "One item is one particle-substep, so ns/item compares methods and sizes; 'resets': NaN-guard resets in the timed run (0 expected). " +
+                     "The summary adds the log–log slope of step time against N (1 = linear).",
+            Notes = new[] { $"Quick run: {Sizes(QuickEdges)} nodes only." },
+            Details = "choosing-a-method.md#throughput-per-method",
+        };
 
-        string LegacyDescription =>
-            "One 1 m jelly cube (E = 10 kPa, ν = 0.45, ρ = 1000 kg/m³, ζ = 0.1) of 10³ = 1000, 22³ = 10648 and 46³ = 97336 nodes (runs only when " +
-            "--filter names the suite; quick run: 1000 only), boxes of 6 tetrahedra per cell, settling on a floor plane under gravity " +
-            $"(friction 0.5, no sleeping), advanced by one 1/60 s step of exactly {Substeps} substeps " +
-            $"({ExplicitSubsteps} for the symplectic Euler variants, whose stable substep shrinks with the cell), the same at every size; implicit Euler CG capped at " +
-            $"{CgIterations} iterations per substep; shape matching uses overlapping clusters {ClusterCells} cells wide. The body starts at rest " +
-            "touching the floor and is put back there every 60 steps. One item is one particle-substep, so ns/item is comparable across " +
-            "methods and sizes. The metric only checks the timed run: NaN-guard resets (0 expected). The summary gives the log–log slope of " +
-            "step time against N (1 = linear).";
+        /// <summary>"10³ = 1000, 22³ = 10648": the node counts of lattice edges.</summary>
+        static string Sizes(int[] edges) => string.Join(", ", Array.ConvertAll(edges, e => $"{e}³ = {e * e * e}"));
 
         /// <summary>None: throughput has no error reference.</summary>
         public string ErrorMetricForPlot => null;

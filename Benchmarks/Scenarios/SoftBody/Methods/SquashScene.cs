@@ -86,24 +86,26 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             body.Step(Dt, TimedGravity, ReadOnlySpan<ColliderShape>.Empty);
         }
 
-        public override string Description =>
-            $"A free {Size} m cube of jelly (E = 10 kPa, ν = 0.45, ρ = 1000 kg/m³, ζ = 0.1; {DefaultCells}³ cells of 6 tetrahedra, " +
-            $"{(DefaultCells + 1) * (DefaultCells + 1) * (DefaultCells + 1)} particles; the variants swept in resolution use n³ cells, n = cells per edge in the " +
-            $"method's label), no gravity. Squashed: the particles are written at the homogeneous compression y → {Stretch}y, x, z → s·x, s·z " +
-            "(s the lateral stretch of uniaxial compressible Neo-Hookean compression, the exact state between frictionless plates), at rest, " +
-            $"and stepped for {SquashTime} s between two frictionless planes {Stretch}L apart (point particles); '{VolumeError}' = |V/(J V₀) − 1| with " +
-            $"V the tetrahedral volume averaged over the last {VolumeAverageTime} s and J = λs² the exact volume ratio. Released: the planes are removed " +
-            $"(positions and velocities kept) and the cube runs free for {ReleaseTime} s. Amplitude A = √(X² + (V/ω₁)²)/L, X and V the RMS over the " +
-            "volume (exact for the body's interpolated fields) of the displacement from the rest shape and of the velocity after removing the rigid motion, ω₁ the lowest excited mode (A is the " +
-            "amplitude of that mode and decays smoothly); recovery time = the last downward crossing of " +
-            $"{RecoveryThreshold * 100} % by A (log-linear between frames; a body not recovered within the window counts the window, and " +
-            $"'{Recovered}' = 0); overshoot = (largest height after first reaching the rest height − L)/((1 − λ)L), height = distance " +
-            "between the centroids of the top and bottom faces (rest-area weights), peak from the parabola through the largest frame and its " +
-            $"neighbours. '{RecoveryError}' and '{OvershootError}' are relative to the float64 reference (Q2 hexahedra, compressible Neo-Hookean, " +
-            "Newmark average acceleration, Kelvin–Voigt damping P_v = βF(2μĖ + λ tr Ė I) with the package's β = 2ζ/ω_ref, ω_ref = π√(μ/ρ)/L, " +
-            "one octant by symmetry) released from the exact squashed state at rest, read at the same frame instants by the same estimators. " +
-            (SquashTargets.TryGetCached(Material, out SquashTargets t) ? t.Summary() : "") +
-            $" '{Error}' = the worst of the three errors.";
+        public override SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "What each method costs to keep a squashed jelly cube's volume and, once released, to recover its shape as fast and with as much overshoot as the reference.",
+            Body = $"A free {Size} m cube, {DefaultCells}³ cells of 6 tetrahedra ({(DefaultCells + 1) * (DefaultCells + 1) * (DefaultCells + 1)} particles; " +
+                   "rows swept in resolution: n³ cells, n = cells per edge in the label), point particles, no pins.",
+            Material = $"Jelly ({MaterialText(Material)}, ζ = {Number(Material.DampingRatio)}); no gravity, frictionless plates.",
+            Load = $"Written at rest in the exact homogeneous squash y → {Stretch}y, x, z → s·x, s·z (s: uniaxial compressible Neo-Hookean), held {SquashTime} s " +
+                   $"between plates {Stretch}L apart, then released (plates removed) for {ReleaseTime} s.",
+            Reference = "Volume: the exact ratio J = λs². Recovery and overshoot: float64 FEM (Q2 hexahedra, compressible Neo-Hookean, Newmark, the package's " +
+                        "Kelvin–Voigt damping) released from the same state, read at the same frames by the same estimators" +
+                        (SquashTargets.TryGetCached(Material, out SquashTargets t) ? $": recovery {Number(t.RecoveryTime)} s, overshoot {Number(t.Overshoot)}." : "."),
+            Metric = $"'{Error}' = the worst of '{VolumeError}' (|V/(J V₀) − 1|, V averaged over the last {VolumeAverageTime} s squashed), '{RecoveryError}' and " +
+                     $"'{OvershootError}' (relative to the reference); '{Recovery}' (s) and '{OvershootMetric}' (fraction of the squash (1 − λ)L) are the raw values.",
+            Notes = new[]
+            {
+                $"Recovery time: when the deformation amplitude A = √(X² + (V/ω₁)²)/L last falls below {RecoveryThreshold * 100} %; '{Recovered}' = 0: not within " +
+                $"{ReleaseTime} s, which then counts as its recovery time (the error is a lower bound).",
+            },
+            Details = "choosing-a-method.md#squash-and-release-methodstudysquash",
+        };
 
         /// <summary>Writes the homogeneous squash about the rest centre (y by λ, x and z by <paramref name="lateral"/>) at rest.</summary>
         public static void WriteSquashed(IMethodBody body, double lateral)

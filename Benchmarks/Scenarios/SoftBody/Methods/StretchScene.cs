@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
-using System.Text;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -128,44 +127,32 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             body.Step(Dt, new float3(0f, -(float)LoadAt(k), 0f), ReadOnlySpan<ColliderShape>.Empty);
         }
 
-        public override string Description
+        public override SuiteDefinition Definition
         {
             get
             {
                 StretchTargets t = StretchTargets.Get(Material);
-                var d = new StringBuilder();
-                d.Append($"A {Length} m bar of {Thickness}×{Thickness} m section ({Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra, ");
-                d.Append($"{(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; the variants swept in resolution use n×8n×n cells, n = cells across ");
-                d.Append("in the method's label), soft rubber (E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³), its top face pinned, hanging under its own weight ");
-                d.Append($"along its axis at {Loads[0]} g, {Loads[1]} g and {Loads[2]} g (g = {Gravity} m/s²; force = weight ρgV = ");
-                d.Append($"{Fmt(Material.Density * Gravity * Length * Thickness * Thickness * Loads[0])}, {Fmt(Material.Density * Gravity * Length * Thickness * Thickness * Loads[1])}, ");
-                d.Append($"{Fmt(Material.Density * Gravity * Length * Thickness * Thickness * Loads[2])} N). Each level is reached by a {RampTime} s raised-cosine ramp from the ");
-                d.Append($"previous one and held {HoldTime} s with ζ = {StaticDampingRatio}; the extension δ (mean displacement of the free end face along the bar) ");
-                d.Append($"is averaged over the last {AverageTime} s. ");
-                d.Append(StretchTargets.Source);
-                d.Append(" Reference δ (mm) per load at ");
-                d.Append(string.Join(", ", t.Resolutions));
-                d.Append(" elements across → extrapolated (observed order): ");
-                for (int k = 0; k < Loads.Length; k++)
+                double weight = Material.Density * Gravity * Length * Thickness * Thickness;
+                return new SuiteDefinition
                 {
-                    d.Append(k > 0 ? "; " : "").Append(LevelNames[k]).Append(' ');
-                    foreach (double v in t.ExtensionsPerResolution[k])
-                        d.Append(Fmt(1e3 * v)).Append(", ");
-                    d.Length -= 2;
-                    d.Append($" → {Fmt(1e3 * t.Extensions[k])} ({t.Orders[k].ToString("0.00", CultureInfo.InvariantCulture)})");
-                }
-                d.Append(". Uniform-section curve (mm): ");
-                for (int k = 0; k < Loads.Length; k++)
-                    d.Append(k > 0 ? ", " : "").Append(Fmt(1e3 * t.UniformSection[k]));
-                d.Append(" (the clamp, which keeps its section from contracting, makes the reference shorter by ");
-                for (int k = 0; k < Loads.Length; k++)
-                    d.Append(k > 0 ? ", " : "").Append((100 * (1 - t.Extensions[k] / t.UniformSection[k])).ToString("0.00", CultureInfo.InvariantCulture));
-                d.Append(" %); linear ρgL²/(2E): ");
-                for (int k = 0; k < Loads.Length; k++)
-                    d.Append(k > 0 ? ", " : "").Append(Fmt(1e3 * t.Linear[k]));
-                d.Append($". '{Error}' = the worst of the three relative errors ('{LevelError(0)}', … signed: + = too soft); '{LevelExtension(0)}', … the raw extensions (m). ");
-                d.Append("Shape matching's frequency is calibrated by ShapeMatchingCalibration with L = L_bar²/h, as for the cantilever (the same body).");
-                return d.ToString();
+                    Purpose = "What each method costs to follow a hanging rubber bar's force–extension curve, from a linear to a strongly nonlinear stretch.",
+                    Body = $"A {Length} m bar of {Thickness}×{Thickness} m section, {Cells.x}×{Cells.y}×{Cells.z} cells of 6 tetrahedra " +
+                           $"({(Cells.x + 1) * (Cells.y + 1) * (Cells.z + 1)} particles; rows swept in resolution: n×8n×n cells, n = cells across in the label), its top face pinned.",
+                    Material = $"Soft rubber ({MaterialText(Material)}), ζ = {StaticDampingRatio}. " +
+                               "Shape matching's frequency comes from ShapeMatchingCalibration with L = L_bar²/h, as for the cantilever (the same body).",
+                    Load = $"Its own weight along its axis at {string.Join(", ", Array.ConvertAll(Loads, l => $"{l} g"))} (g = {Gravity} m/s²; ρgV = " +
+                           $"{string.Join(", ", Array.ConvertAll(Loads, l => Fmt(weight * l)))} N), each reached by a {RampTime} s raised-cosine ramp and held {HoldTime} s.",
+                    Reference = "Float64 FEM of the same clamped bar (Q2 hexahedra, compressible Neo-Hookean, Newton statics) at " +
+                                $"{string.Join(", ", t.Resolutions)} elements across, extrapolated per load: δ = " +
+                                $"{string.Join(", ", Array.ConvertAll(t.Extensions, v => Fmt(1e3 * v)))} mm.",
+                    Metric = $"'{Error}' = the worst |δ/δ_ref − 1| of the three loads; '{LevelError(0)}', … signed (+ = too soft); '{LevelExtension(0)}', … the raw δ (m): " +
+                             $"the free end face's mean displacement along the bar, averaged over the last {AverageTime} s of each hold.",
+                    Notes = new[]
+                    {
+                        "A reset ends the run: its level and the later ones are NaN.",
+                    },
+                    Details = "choosing-a-method.md#stretch-the-forceextension-curve-methodstudystretch",
+                };
             }
         }
 

@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
+using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
@@ -21,8 +23,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary>Suite name.</summary>
         public abstract string Name { get; }
-        /// <summary>What the scene does and which reference it compares with.</summary>
-        public abstract string Description { get; }
+        /// <summary>What the scene does and which reference it compares with (the report's definition; the suite adds how cost is counted).</summary>
+        public abstract SuiteDefinition Definition { get; }
         /// <summary>The body every method is built from.</summary>
         public abstract MethodBodySetup Setup { get; }
         /// <summary>Edge of one cell of the box (m): shape matching's cluster size is a multiple of it.</summary>
@@ -73,6 +75,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// A body that diverged gives NaN errors.
         /// </summary>
         public abstract IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build);
+
+        /// <summary>"E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³": a material's elastic constants for the definitions (ζ is stated where it applies).</summary>
+        public static string MaterialText(in ElasticMaterial m)
+        {
+            double e = m.YoungsModulus;
+            string modulus = e >= 1e6 ? Number(e / 1e6) + " MPa" : e >= 1e3 ? Number(e / 1e3) + " kPa" : Number(e) + " Pa";
+            return $"E = {modulus}, ν = {Number(m.PoissonRatio)}, ρ = {Number(m.Density)} kg/m³";
+        }
+
+        /// <summary>A number with up to three decimals, invariant culture.</summary>
+        protected static string Number(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);
 
         /// <summary>|a/b − 1|, NaN when a is not finite.</summary>
         protected static double Relative(double value, double reference) =>

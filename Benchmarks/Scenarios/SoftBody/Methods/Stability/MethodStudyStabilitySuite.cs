@@ -31,27 +31,34 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string Name => SuiteName;
         public string ErrorMetricForPlot => null;
 
-        public SuiteDefinition Definition => new SuiteDefinition { Notes = new[] { LegacyDescription } };
-
-        string LegacyDescription =>
-            $"A {StabilityCube.DefaultSize} m cube of {StabilityCube.DefaultCells}³ cells (6 tetrahedra each, " +
-            $"{(StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1)} particles) of a stiff material " +
-            "(E = 10 MPa, ν = 0.45, ρ = 1100 kg/m³, ζ = 0.1), bottom face pinned, gravity on, started from a 10 % compression along y " +
-            "about its bottom face. Largest stable step ('" + MethodStudyStabilityScenario.MaxStep + "', ms): one step per frame at " +
-            $"{MethodStudyStabilityScenario.StepKnob} substep; a run of dt is bounded when for T = max({BoundedRun.MinTime} s, {BoundedRun.MinSteps} steps) " +
-            "the NaN guard never resets the body, every position and velocity stays finite, the kinetic energy stays below " +
-            $"{StabilityCube.KineticEnergyFactor}× (U₀ + M g L) (U₀ = ½(λ+2μ)ε²V, the linear strain energy of the start) and the shape " +
-            $"deviation (largest node distance from the rest shape after removing the best-fit rigid motion) stays below {StabilityCube.DeformationFactor}× the cube size; " +
-            $"dt is bisected in log space between {StableStepSearch.MinStep:0e0} s (assumed bounded) and {StableStepSearch.MaxStep} s (a method bounded there " +
-            $"is capped) to a factor {StableStepSearch.Resolution}, then dt_max/2, dt_max/4 and dt_max·2ᵏ below 1 s are run too ('{MethodStudyStabilityScenario.Monotone}' = 1 " +
-            $"when the first two are bounded and none of the others; '{MethodStudyStabilityScenario.BoundedAbove}' = the largest of the others that was bounded). " +
-            $"'{MethodStudyStabilityScenario.Bound}': the explicit limit √(β² + 4/ω_max²) − β of the method's own model (MassSpringStability or FEM ω_max by power " +
-            $"iteration, β its Rayleigh coefficient). '{MethodStudyStabilityScenario.FailureReason}': 1 reset, 2 non-finite, 3 kinetic energy, 4 deformation. " +
-            $"Hard cases on the same cube without pins and without gravity, at the method's first knob value of the catalog and 1/60 s steps for {MethodStudyStabilityScenario.HardCaseTime} s " +
-            $"(huge step: {HardCases.HugeStep} s steps from a {HardCases.HugeStepCompression * 100} % compression): outcome 0 recovers (no reset, within " +
-            $"{HardCaseRun.RecoveredDeviation * 100} % of the rest shape), 1 reset (the guard reset it once, then it stayed at rest), 2 bounded (at most one reset, " +
-            "finite, not back), 3 diverged (more resets, or deformed beyond 2 sizes); '… dev' is the final shape deviation over the cube size. " +
-            "ns/item: one particle through one step of dt_max (managed .NET, one thread).";
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "How large a step each method survives on a stiff pinned cube, against the explicit stability limit, and what it does with four hard cases.",
+            Body = $"A {StabilityCube.DefaultSize} m cube of {StabilityCube.DefaultCells}³ cells of 6 tetrahedra " +
+                   $"({(StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1) * (StabilityCube.DefaultCells + 1)} particles), bottom face pinned (free for the hard cases).",
+            Material = $"Stiff: {StudyScene.MaterialText(StabilityCube.StiffMaterial)}, ζ = {StabilityCube.StiffMaterial.DampingRatio}; " +
+                       $"every method at {MethodStudyStabilityScenario.StepKnob} substep per step, so the row measures the integrator.",
+            Load = $"Gravity, from a {StabilityCube.DefaultCompression * 100} % compression along y about the bottom face; each dt runs for " +
+                   $"max({BoundedRun.MinTime} s, {BoundedRun.MinSteps} steps). Hard cases: no pins, no gravity, {MethodStudyStabilityScenario.HardCaseTime} s of 1/60 s steps at the method's first knob.",
+            Reference = $"'{MethodStudyStabilityScenario.Bound}': the explicit limit √(β² + 4/ω_max²) − β of the method's own linearised model " +
+                        "(mass-spring network or FEM mesh; ω_max by power iteration, β its Rayleigh coefficient); none for the other methods.",
+            Metric = $"One item is one particle through one step of dt_max. '{MethodStudyStabilityScenario.MaxStep}': the largest bounded dt (no reset, finite, kinetic energy " +
+                     $"< {StabilityCube.KineticEnergyFactor}×(U₀ + MgL), shape deviation < {StabilityCube.DeformationFactor} sizes), bisected in log space between " +
+                     $"{StableStepSearch.MinStep:0e0} and {StableStepSearch.MaxStep} s to a factor {StableStepSearch.Resolution}.",
+            Notes = new[]
+            {
+                $"'{MethodStudyStabilityScenario.Capped}' = 1: bounded at {StableStepSearch.MaxStep} s, the search's cap. '{MethodStudyStabilityScenario.BoundedBelow}' = 1: dt_max/2 and dt_max/4 " +
+                $"bounded; '{MethodStudyStabilityScenario.Monotone}' = 1: that, and no dt_max·2ᵏ below {StableStepSearch.MaxStep} s bounded; '{MethodStudyStabilityScenario.BoundedAbove}': the largest that was (ms).",
+                $"'{MethodStudyStabilityScenario.FailureReason}' of the smallest failing step: {(int)UnboundedReason.Reset} reset, {(int)UnboundedReason.NonFinite} non-finite, " +
+                $"{(int)UnboundedReason.KineticEnergy} kinetic energy, {(int)UnboundedReason.Deformation} deformation.",
+                $"Hard cases ('huge step': {HardCases.HugeStep} s steps from a {HardCases.HugeStepCompression * 100} % compression): {(int)HardCaseOutcome.Recovers} recovers " +
+                $"(no reset, within {HardCaseRun.RecoveredDeviation * 100} % of the rest shape), {(int)HardCaseOutcome.Reset} reset once then at rest, {(int)HardCaseOutcome.Bounded} bounded " +
+                $"(≤ 1 reset, finite, not back), {(int)HardCaseOutcome.Diverged} diverged (more resets, or beyond {HardCaseRun.DivergedDeviation} sizes); " +
+                $"'…{MethodStudyStabilityScenario.DeviationSuffix}' = final shape deviation over the cube size.",
+                "Quick run: only the methods with quick knob values in the catalog.",
+            },
+            Details = "choosing-a-method.md#stability-the-largest-stable-step-and-the-hard-cases-methodstudystability",
+        };
 
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
