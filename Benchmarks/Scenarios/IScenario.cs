@@ -49,6 +49,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         int MaxRepeats { get; }
     }
 
+    /// <summary>
+    /// A suite whose scenarios share no mutable state: the Setup and Evaluate of different scenarios may run at the same time
+    /// on worker threads (each is single-threaded and gives the same bits either way). The runner still times their steps
+    /// one at a time, with nothing else running.
+    /// </summary>
+    public interface IScenarioSuiteIndependent
+    {
+    }
+
     /// <summary>Groups of scenarios the runner knows, with the figure each group plots.</summary>
     public interface IScenarioSuite
     {

@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Threading.Tasks;
 using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
@@ -60,21 +61,23 @@ namespace SoftBodyDynamics.Runner
                 var table = new TablePrinter(output, planned.Scenarios.Select(p => p.Scenario));
                 if (planned.Scenarios.Count > 0)
                     table.PrintHeader();
-                foreach (PlannedScenario p in planned.Scenarios)
-                {
-                    progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
-                    long t0 = Stopwatch.GetTimestamp();
-                    int repeats = p.Scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
-                    ScenarioResult r = ScenarioTimer.Run(p.Scenario, repeats);
-                    double seconds = Seconds(t0);
-                    suiteResult.Rows.Add(r);
-                    table.PrintRow(r);
-                    timings.Record(plan.Keys[index], seconds);
-                    estimate.Finished(index, seconds);
-                    index++;
-                    report.Finished = index;
-                    report.Write(timings);
-                }
+                if (planned.Suite is IScenarioSuiteIndependent && options.Threads > 1 && planned.Scenarios.Count > 1)
+                    index = RunConcurrently(planned, suiteResult, options, plan, index, table, timings, estimate, clock, report, progress);
+                else
+                    foreach (PlannedScenario p in planned.Scenarios)
+                    {
+                        progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                        long t0 = Stopwatch.GetTimestamp();
+                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options));
+                        double seconds = Seconds(t0);
+                        suiteResult.Rows.Add(r);
+                        table.PrintRow(r);
+                        timings.Record(plan.Keys[index], seconds);
+                        estimate.Finished(index, seconds);
+                        index++;
+                        report.Finished = index;
+                        report.Write(timings);
+                    }
                 suiteResult.Finish(options.Scope, dir);
                 if (!string.IsNullOrEmpty(suiteResult.Summary))
                 {
@@ -106,6 +109,51 @@ namespace SoftBodyDynamics.Runner
             output.WriteLine($"Report written to {path}");
             progress.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
             return report.Parts.Any(p => !p.Succeeded) ? 1 : 0;
+        }
+
+        static int Repeats(IScenario scenario, RunOptions options) =>
+            scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
+
+        /// <summary>
+        /// A suite of independent scenarios: every Setup on <see cref="RunOptions.Threads"/> worker threads, then each scenario's
+        /// warm-up and timed steps one at a time with nothing else running, then every evaluation on the worker threads. Each
+        /// scenario's time in timings.csv is its own timing plus its share of the two concurrent phases. Returns the next step index.
+        /// </summary>
+        static int RunConcurrently(PlannedSuite planned, SuiteResult suiteResult, RunOptions options, RunPlan plan, int index, TablePrinter table,
+            RunTimings timings, ProgressEstimate estimate, RunClock clock, Report report, TextWriter progress)
+        {
+            int n = planned.Scenarios.Count;
+            var parallel = new ParallelOptions { MaxDegreeOfParallelism = options.Threads };
+            progress.WriteLine($"      {planned.Suite.Name}: setting up {n} scenarios on {options.Threads} threads");
+            long t0 = Stopwatch.GetTimestamp();
+            Parallel.For(0, n, parallel, k => planned.Scenarios[k].Scenario.Setup());
+            double shared = Seconds(t0);
+            var results = new ScenarioResult[n];
+            var own = new double[n];
+            for (int k = 0; k < n; k++)
+            {
+                PlannedScenario p = planned.Scenarios[k];
+                progress.WriteLine(Progress(index + k, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                long t1 = Stopwatch.GetTimestamp();
+                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options));
+                own[k] = Seconds(t1);
+            }
+            progress.WriteLine($"      {planned.Suite.Name}: evaluating {n} scenarios on {options.Threads} threads — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");
+            long t2 = Stopwatch.GetTimestamp();
+            Parallel.For(0, n, parallel, k => results[k].Metrics = planned.Scenarios[k].Scenario.Evaluate());
+            shared += Seconds(t2);
+            for (int k = 0; k < n; k++)
+            {
+                suiteResult.Rows.Add(results[k]);
+                table.PrintRow(results[k]);
+                double seconds = own[k] + shared / n;
+                timings.Record(plan.Keys[index], seconds);
+                estimate.Finished(index, seconds);
+                index++;
+            }
+            report.Finished = index;
+            report.Write(timings);
+            return index;
         }
 
         static double Seconds(long t0) => (Stopwatch.GetTimestamp() - t0) / (double)Stopwatch.Frequency;
@@ -211,7 +259,12 @@ namespace SoftBodyDynamics.Runner
         public readonly List<(string File, string Alt, string Caption)> Figures = new List<(string, string, string)>();
         public bool Finished;
 
+        SuiteDefinition m_Definition;
+
         public SuiteResult(IScenarioSuite suite) { Suite = suite; }
+
+        /// <summary>The suite's definition, asked for once (a scene's may compute its reference values).</summary>
+        public SuiteDefinition Definition => m_Definition ??= Suite.Definition;
 
         public IReadOnlyList<ScenarioOutcome> Outcomes() =>
             Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep));

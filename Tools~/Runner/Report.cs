@@ -79,13 +79,14 @@ namespace SoftBodyDynamics.Runner
             md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread — not Burst; Burst numbers come from the Unity Performance tests)");
             md.AppendLine($"- Timing: median of {m_Options.Repeats} timed steps (fewer for scenarios whose step is a whole run) after a warm-up of at least {ScenarioTimer.WarmupSeconds} s and 3 steps that goes on (up to {ScenarioTimer.MaxWarmupSeconds} s) while the fastest step still improves");
+            md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");
             md.AppendLine();
 
             md.AppendLine("## Contents");
             md.AppendLine();
             foreach (SuiteResult s in Suites)
-                md.AppendLine($"- [{s.Suite.Name}](#{Slug(s.Suite.Name)}) — {Purpose(s.Suite)}{(s.Finished ? "" : " *(unfinished)*")}");
+                md.AppendLine($"- [{s.Suite.Name}](#{Slug(s.Suite.Name)}) — {s.Definition?.Purpose ?? ""}{(s.Finished ? "" : " *(unfinished)*")}");
             foreach (PartResult p in Parts)
                 md.AppendLine($"- [{p.Part.Title}](#{Slug(p.Part.Title)})");
             md.AppendLine();
@@ -102,13 +103,11 @@ namespace SoftBodyDynamics.Runner
 
         string ScopeFlag() => m_Options.Scope == RunScope.Full ? " --full" : m_Options.Scope == RunScope.Quick ? " --quick" : "";
 
-        static string Purpose(IScenarioSuite suite) => suite.Definition?.Purpose ?? "";
-
         static void WriteSuite(StringBuilder md, SuiteResult s, string docs)
         {
             md.AppendLine($"## {s.Suite.Name}");
             md.AppendLine();
-            SuiteDefinition d = s.Suite.Definition;
+            SuiteDefinition d = s.Definition;
             if (!string.IsNullOrEmpty(d?.Purpose))
                 md.AppendLine($"*{d.Purpose}*").AppendLine();
             if (s.Rows.Count > 0)

@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Runner
     sealed class RunOptions
     {
         public const string Usage =
-            "usage: bash Tools~/run.sh [--quick | --full] [--filter TEXT] [--method TEXT] [--out DIR] [--repeats N] [--help]\n" +
+            "usage: bash Tools~/run.sh [--quick | --full] [--filter TEXT] [--method TEXT] [--out DIR] [--repeats N] [--threads N] [--help]\n" +
             "\n" +
             "Runs the benchmark scenarios headless, prints one table per suite and writes report.md (summary first),\n" +
             "results.csv (one row per metric, with its unit) and figures to the output folder.\n" +
@@ -19,6 +19,8 @@ namespace SoftBodyDynamics.Runner
             "  --method TEXT  only the scenarios whose method contains TEXT, e.g. \"FEM co-rotational implicit\" (skips the lavapipe parts)\n" +
             "  --out DIR      report folder (default Reports~/latest, relative to the package root)\n" +
             "  --repeats N    timed steps per scenario (default 15; long scenarios time fewer)\n" +
+            "  --threads N    worker threads for setting up and evaluating independent scenarios (default: all cores);\n" +
+            "                 timed steps always run one at a time with nothing else running\n" +
             "  --help         this text\n" +
             "\n" +
             "Progress goes to stderr, one line per scenario as it starts: [i/N], elapsed time, estimated time left (from the\n" +
@@ -32,6 +34,8 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Only scenarios whose method text contains this (case-insensitive), e.g. "Neo-Hookean implicit"; null = all.</summary>
         public string Method;
         public bool Help;
+        /// <summary>Worker threads for the setup and evaluation of independent scenarios (timed steps always run alone).</summary>
+        public int Threads = System.Environment.ProcessorCount;
         /// <summary>Package root: the report parts run from it (default: the working directory).</summary>
         public string Root = ".";
 
@@ -56,6 +60,8 @@ namespace SoftBodyDynamics.Runner
                         o.Help = true; break;
                     case "--repeats" when i + 1 < args.Length && int.TryParse(args[i + 1], out int n) && n > 0:
                         o.Repeats = n; i++; break;
+                    case "--threads" when i + 1 < args.Length && int.TryParse(args[i + 1], out int t) && t > 0:
+                        o.Threads = t; i++; break;
                     case "--filter" when i + 1 < args.Length: o.Filter = args[++i]; break;
                     case "--method" when i + 1 < args.Length: o.Method = args[++i]; break;
                     default:

@@ -16,9 +16,18 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Warm-up never lasts longer than this (s).</summary>
         public const double MaxWarmupSeconds = 3.0;
 
+        /// <summary>Setup, warm-up, the timed steps, then the evaluation: one scenario start to end.</summary>
         public static ScenarioResult Run(IScenario scenario, int repeats)
         {
             scenario.Setup();
+            ScenarioResult r = Time(scenario, repeats);
+            r.Metrics = scenario.Evaluate();
+            return r;
+        }
+
+        /// <summary>Warm-up and the timed steps of a scenario whose Setup has run; the result has no metrics yet.</summary>
+        public static ScenarioResult Time(IScenario scenario, int repeats)
+        {
             Warmup(scenario);
 
             var ms = new double[repeats];
@@ -44,7 +53,6 @@ namespace SoftBodyDynamics.Runner
                 MinMs = ms[0],
                 MaxMs = ms[repeats - 1],
                 AllocatedBytesPerStep = (double)allocated / repeats,
-                Metrics = scenario.Evaluate(),
             };
         }
 

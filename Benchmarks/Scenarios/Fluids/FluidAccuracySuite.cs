@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// against ns per particle-substep, the figure), the hydrostatic column, and the droplet (flocking against Akinci
     /// cohesion).
     /// </summary>
-    public sealed class FluidAccuracySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
+    public sealed class FluidAccuracySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings
     {
         /// <summary>Dam-break resolutions (particles across the column width a) of the full run.</summary>
         public static readonly int[] Resolutions = { 10, 20, 40 };
@@ -148,6 +148,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string CostLabel => "ns per particle-substep, median";
 
         public double Cost(ScenarioOutcome row) => row.NsPerItem;
+
+        public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope) => FluidFindings.Findings(rows);
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {

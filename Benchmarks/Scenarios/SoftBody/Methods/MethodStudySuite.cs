@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// One scene of the method study as a suite: every method of <see cref="MethodCatalog"/> at every knob value, one
     /// table, one error-against-cost figure (one curve per method) and a ranking by the cost to reach 1 %, 5 % and 20 %.
     /// </summary>
-    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
+    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent
     {
         readonly StudyScene m_Scene;
 
@@ -46,6 +46,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string PointLabel(ScenarioOutcome row) => MethodStudyRanking.Knob(row.Method);
         public string CostLabel => "µs per 1/60 s step of the whole body (all substeps and iterations), median";
         public double Cost(ScenarioOutcome row) => MethodStudyRanking.MicrosecondsPerStep(row);
+
+        public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
+        {
+            yield return MethodStudyFindings.Accuracy(Name.Replace("MethodStudy", ""), rows);
+        }
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {

@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// largest stable step of a stiff pinned cube against the explicit limits of the mass-spring network and of FEM, and
     /// what the method does with four hard cases at a game frame. Takes minutes; no error-against-cost figure.
     /// </summary>
-    public sealed class MethodStudyStabilitySuite : IScenarioSuite, IScenarioSuiteSummary
+    public sealed class MethodStudyStabilitySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFindings, IScenarioSuiteIndependent
     {
         /// <summary>The suite's name (the runner's <c>--filter</c>).</summary>
         public const string SuiteName = "MethodStudyStability";
@@ -68,6 +68,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (!quick || v.QuickKnobs.Length > 0)
                     yield return new MethodStudyStabilityScenario(() => Cube, v);
         }
+
+        public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope) => MethodStudyFindings.HardCases(rows);
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
