@@ -58,6 +58,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
     }
 
+    /// <summary>
+    /// A suite with work every scenario needs and none of them times (a float64 reference): the runner calls
+    /// <see cref="Prepare"/> for every such suite of the run before the first timed step, on worker threads.
+    /// </summary>
+    public interface IScenarioSuitePreparation
+    {
+        /// <summary>Does the shared work once; thread-safe, and cheap when done already.</summary>
+        void Prepare();
+    }
+
     /// <summary>Groups of scenarios the runner knows, with the figure each group plots.</summary>
     public interface IScenarioSuite
     {

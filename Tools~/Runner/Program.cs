@@ -52,6 +52,16 @@ namespace SoftBodyDynamics.Runner
             progress.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
 
             int index = 0;
+            if (plan.Preparations.Count > 0)
+            {
+                progress.WriteLine(Progress(index, plan.Count, $"references of {string.Join(", ", plan.Preparations.Select(s => s.Name))} on {options.Threads} threads", clock, estimate));
+                long t0 = Stopwatch.GetTimestamp();
+                Parallel.ForEach(plan.Preparations, new ParallelOptions { MaxDegreeOfParallelism = options.Threads }, s => ((IScenarioSuitePreparation)s).Prepare());
+                double seconds = Seconds(t0);
+                timings.Record(plan.Keys[index], seconds);
+                estimate.Finished(index, seconds);
+                index++;
+            }
             foreach (PlannedSuite planned in plan.Suites)
             {
                 var suiteResult = new SuiteResult(planned.Suite);
@@ -206,6 +216,8 @@ namespace SoftBodyDynamics.Runner
     {
         public readonly List<PlannedSuite> Suites = new List<PlannedSuite>();
         public readonly List<ReportPart> Parts = new List<ReportPart>();
+        /// <summary>Suites whose shared work (<see cref="IScenarioSuitePreparation"/>) runs first, all at once on worker threads.</summary>
+        public readonly List<IScenarioSuite> Preparations = new List<IScenarioSuite>();
         /// <summary>Timing key of each step, in run order.</summary>
         public readonly List<string> Keys = new List<string>();
         public int Count => Keys.Count;
@@ -215,6 +227,8 @@ namespace SoftBodyDynamics.Runner
         public static RunPlan Build(RunOptions options, IEnumerable<IScenarioSuite> suites, IEnumerable<ReportPart> parts)
         {
             var plan = new RunPlan();
+            // The preparation step, when any suite has one, is the first step of the run.
+            plan.Keys.Add(null);
             foreach (IScenarioSuite suite in suites)
             {
                 if (options.Filter != null && suite.Name.IndexOf(options.Filter, StringComparison.OrdinalIgnoreCase) < 0)
@@ -234,7 +248,13 @@ namespace SoftBodyDynamics.Runner
                     plan.Keys.Add(RunTimings.Key(suite.Name, $"{sc.Name}: {sc.Method} ({sc.Size} {sc.SizeUnit}), {RunOptions.ScopeName(options.Scope)}"));
                 }
                 plan.Suites.Add(planned);
+                if (suite is IScenarioSuitePreparation && planned.Scenarios.Count > 0)
+                    plan.Preparations.Add(suite);
             }
+            if (plan.Preparations.Count > 0)
+                plan.Keys[0] = RunTimings.Key("references", string.Join(", ", plan.Preparations.Select(s => s.Name)) + ", " + RunOptions.ScopeName(options.Scope));
+            else
+                plan.Keys.RemoveAt(0);
             // The report parts run only when no --method narrows the run, and with --filter only when it names them.
             if (options.Method == null)
                 foreach (ReportPart part in parts)

@@ -98,6 +98,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Details = "choosing-a-method.md#cantilever-methodstudycantilever",
         };
 
+        public override void PrepareReference() => CantileverTargets.Get(Setup);
+
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build)
         {
             bool[] tipFace = StudyBox.NodesAt(setup.Mesh, 0, Length, 1e-5f);

@@ -127,6 +127,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary><see cref="Measure(MethodBodySetup, Func{MethodBodySetup, IMethodBody})"/> against given targets (only their
         /// <see cref="Csm3Targets.UyMean"/>, <see cref="Csm3Targets.UyAmplitude"/> and <see cref="Csm3Targets.UyFrequency"/> are read).</summary>
+        public override void PrepareReference() => Csm3Targets.Get(Material);
+
         public IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build, Csm3Targets t)
         {
             bool[] tipFace = StudyBox.NodesAt(setup.Mesh, 0, Length, 1e-5f);

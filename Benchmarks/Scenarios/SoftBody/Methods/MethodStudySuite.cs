@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// One scene of the method study as a suite: every method of <see cref="MethodCatalog"/> at every knob value, one
     /// table, one error-against-cost figure (one curve per method) and a ranking by the cost to reach 1 %, 5 % and 20 %.
     /// </summary>
-    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent
+    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent, IScenarioSuitePreparation
     {
         readonly StudyScene m_Scene;
 
@@ -35,10 +35,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
-            bool quick = scope == RunScope.Quick;
             foreach (MethodVariant v in MethodCatalog.Variants)
-            foreach (int resolution in v.Resolutions.Length > 0 && !quick ? v.Resolutions.Where(n => n <= m_Scene.MaxResolution) : new[] { 0 })
-            foreach (int knob in quick ? v.QuickKnobs : v.Knobs)
+            foreach (int resolution in v.ResolutionsOf(scope, m_Scene.MaxResolution))
+            foreach (int knob in v.KnobsOf(scope))
                 yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }
 
@@ -46,6 +45,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string PointLabel(ScenarioOutcome row) => MethodStudyRanking.Knob(row.Method);
         public string CostLabel => "µs per 1/60 s step of the whole body (all substeps and iterations), median";
         public double Cost(ScenarioOutcome row) => MethodStudyRanking.MicrosecondsPerStep(row);
+
+        /// <summary>The scene's float64 reference.</summary>
+        public void Prepare() => m_Scene.PrepareReference();
 
         public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {

@@ -18,18 +18,36 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// knob value; empty = the scene's default resolution only.
         /// </summary>
         public readonly int[] Resolutions;
+        /// <summary>Knob values of the default run (<see cref="RunScope.Standard"/>); empty = the method is left out of it.</summary>
+        public readonly int[] StandardKnobs;
+        /// <summary>Finest resolution of the default run (cells across); 0 = every resolution of <see cref="Resolutions"/>.</summary>
+        public readonly int StandardMaxResolution;
         /// <summary>Builds a body of the setup with a knob value; the cell size (m) sizes shape matching's clusters.</summary>
         public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
 
         public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create,
-            int[] resolutions = null)
+            int[] resolutions = null, int[] standardKnobs = null, int standardMaxResolution = 0)
         {
+            StandardKnobs = standardKnobs ?? knobs;
+            StandardMaxResolution = standardMaxResolution;
             Family = family;
             KnobUnit = knobUnit;
             Knobs = knobs;
             QuickKnobs = quickKnobs;
             Create = create;
             Resolutions = resolutions ?? new int[0];
+        }
+
+        /// <summary>Knob values a run of <paramref name="scope"/> sweeps.</summary>
+        public int[] KnobsOf(RunScope scope) => scope == RunScope.Quick ? QuickKnobs : scope == RunScope.Standard ? StandardKnobs : Knobs;
+
+        /// <summary>Resolutions a run of <paramref name="scope"/> sweeps, none finer than <paramref name="maxResolution"/>; {0} (the scene's default) when the variant sweeps none or the run is quick.</summary>
+        public int[] ResolutionsOf(RunScope scope, int maxResolution)
+        {
+            if (Resolutions.Length == 0 || scope == RunScope.Quick)
+                return new[] { 0 };
+            int cap = scope == RunScope.Standard && StandardMaxResolution > 0 ? Math.Min(maxResolution, StandardMaxResolution) : maxResolution;
+            return Array.FindAll(Resolutions, n => n <= cap);
         }
 
         /// <summary>"family; knob unit", the scenario's method text (the figure splits it at the semicolon before the knob).</summary>

@@ -158,6 +158,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static string Fmt(double v) => v.ToString(Math.Abs(v) >= 100 ? "0.0" : "0.000", CultureInfo.InvariantCulture);
 
+        public override void PrepareReference() => StretchTargets.Get(Material);
+
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build) =>
             Measure(setup, build, StretchTargets.Get(setup.Material));
 

@@ -76,6 +76,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public abstract IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build);
 
+        /// <summary>Computes (and caches) the scene's float64 reference, which every <see cref="Measure"/> compares with.</summary>
+        public abstract void PrepareReference();
+
         /// <summary>"E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³": a material's elastic constants for the definitions (ζ is stated where it applies).</summary>
         public static string MaterialText(in ElasticMaterial m)
         {
