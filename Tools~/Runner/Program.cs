@@ -78,7 +78,7 @@ namespace SoftBodyDynamics.Runner
                     {
                         progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
                         long t0 = Stopwatch.GetTimestamp();
-                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options));
+                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget);
                         double seconds = Seconds(t0);
                         suiteResult.Rows.Add(r);
                         table.PrintRow(r);
@@ -145,7 +145,7 @@ namespace SoftBodyDynamics.Runner
                 PlannedScenario p = planned.Scenarios[k];
                 progress.WriteLine(Progress(index + k, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
                 long t1 = Stopwatch.GetTimestamp();
-                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options));
+                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget);
                 own[k] = Seconds(t1);
             }
             progress.WriteLine($"      {planned.Suite.Name}: evaluating {n} scenarios on {options.Threads} threads — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");

@@ -41,6 +41,15 @@ namespace SoftBodyDynamics.Runner
 
         public bool Quick => Scope == RunScope.Quick;
 
+        /// <summary>
+        /// Seconds of timed steps per scenario in the default run: a scenario whose step is long times as many as fit (at least
+        /// <see cref="ScenarioTimer.MinRepeats"/>); the full run times <see cref="Repeats"/> whatever they cost.
+        /// </summary>
+        public double TimedBudget => Scope == RunScope.Full ? double.PositiveInfinity : DefaultTimedBudget;
+
+        /// <summary>Seconds of timed steps per scenario outside the full run.</summary>
+        public const double DefaultTimedBudget = 3.0;
+
         /// <summary>The options, or null (with <paramref name="error"/>) when the command line is not understood.</summary>
         public static RunOptions Parse(string[] args, out string error)
         {

@@ -17,18 +17,27 @@ namespace SoftBodyDynamics.Runner
         public const double MaxWarmupSeconds = 3.0;
 
         /// <summary>Setup, warm-up, the timed steps, then the evaluation: one scenario start to end.</summary>
-        public static ScenarioResult Run(IScenario scenario, int repeats)
+        public static ScenarioResult Run(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity)
         {
             scenario.Setup();
-            ScenarioResult r = Time(scenario, repeats);
+            ScenarioResult r = Time(scenario, repeats, timedBudget);
             r.Metrics = scenario.Evaluate();
             return r;
         }
 
-        /// <summary>Warm-up and the timed steps of a scenario whose Setup has run; the result has no metrics yet.</summary>
-        public static ScenarioResult Time(IScenario scenario, int repeats)
+        /// <summary>Fewest timed steps when a time budget cuts their number: the median of three.</summary>
+        public const int MinRepeats = 3;
+
+        /// <summary>
+        /// Warm-up and the timed steps of a scenario whose Setup has run; the result has no metrics yet. With a finite
+        /// <paramref name="timedBudget"/> (s), the timed steps are cut to what fits it at the warm-up's fastest step, but never
+        /// below <see cref="MinRepeats"/>.
+        /// </summary>
+        public static ScenarioResult Time(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity)
         {
-            Warmup(scenario);
+            double fastest = Warmup(scenario);
+            if (fastest > 0 && timedBudget < double.PositiveInfinity)
+                repeats = Math.Max(Math.Min(repeats, MinRepeats), Math.Min(repeats, (int)(timedBudget / fastest)));
 
             var ms = new double[repeats];
             long allocated0 = GC.GetAllocatedBytesForCurrentThread();
@@ -57,14 +66,16 @@ namespace SoftBodyDynamics.Runner
         }
 
         /// <summary>
+        /// Returns the fastest step seen (s).
         /// Runs steps in rounds of at least <see cref="k_RoundSeconds"/> until at least <see cref="WarmupSeconds"/>
         /// and 3 steps have passed and the fastest step of the last round is no more than
         /// <see cref="k_SettledFraction"/> faster than that of the round before: the JIT tiers a method up
         /// (tier 0, instrumented, optimised) some time after its first calls, so the first scenario that runs new
         /// code needs longer than the others. Stops after <see cref="MaxWarmupSeconds"/> in any case.
         /// </summary>
-        static void Warmup(IScenario scenario)
+        static double Warmup(IScenario scenario)
         {
+            double fastest = double.PositiveInfinity;
             var total = Stopwatch.StartNew();
             int steps = 0;
             double previousBest = double.PositiveInfinity;
@@ -81,9 +92,10 @@ namespace SoftBodyDynamics.Runner
                     steps++;
                 } while ((double)(Stopwatch.GetTimestamp() - roundStart) / Stopwatch.Frequency < k_RoundSeconds);
                 double elapsed = total.Elapsed.TotalSeconds;
+                fastest = Math.Min(fastest, best);
                 bool settled = best >= (1.0 - k_SettledFraction) * previousBest;
                 if (elapsed >= MaxWarmupSeconds || (steps >= 3 && elapsed >= WarmupSeconds && settled))
-                    return;
+                    return fastest;
                 previousBest = best;
             }
         }

@@ -342,3 +342,40 @@ namespace SoftBodyDynamics.Tests.Runner
             Assert.AreEqual(text, SummaryWriter.Error(v, unit));
     }
 }
+
+namespace SoftBodyDynamics.Tests.Runner
+{
+    public class ScenarioTimerTests
+    {
+        /// <summary>A scenario whose step sleeps <paramref name="ms"/> milliseconds.</summary>
+        sealed class SleepingScenario : IScenario
+        {
+            readonly int m_Ms;
+            public SleepingScenario(int ms) { m_Ms = ms; }
+            public string Name => "Sleep";
+            public string Method => "sleep";
+            public int Size => 1;
+            public string SizeUnit => "steps";
+            public long ItemsPerStep => 1;
+            public void Setup() { }
+            public void Step() => System.Threading.Thread.Sleep(m_Ms);
+            public IReadOnlyList<Metric> Evaluate() => new Metric[0];
+        }
+
+        [Test]
+        public void TimedBudget_CutsTheRepeatsOfLongSteps_ButNeverBelowThree()
+        {
+            // Steps of at least 40 ms in a 0.2 s budget: at most 5 fit.
+            Assert.That(SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, 0.2).Repeats, Is.InRange(3, 5));
+            Assert.AreEqual(3, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, 0.01).Repeats);
+        }
+
+        [Test]
+        public void NoBudget_TimesEveryRepeatAskedFor() =>
+            Assert.AreEqual(7, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(1), 7).Repeats);
+
+        [Test]
+        public void FewerRepeatsAskedThanTheFloor_AreKept() =>
+            Assert.AreEqual(2, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 2, 0.01).Repeats);
+    }
+}
