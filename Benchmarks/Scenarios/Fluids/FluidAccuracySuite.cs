@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// against ns per particle-substep, the figure), the hydrostatic column, and the droplet (flocking against Akinci
     /// cohesion).
     /// </summary>
-    public sealed class FluidAccuracySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings
+    public sealed class FluidAccuracySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent
     {
         /// <summary>Dam-break resolutions (particles across the column width a) of the full run.</summary>
         public static readonly int[] Resolutions = { 10, 20, 40 };
