@@ -26,6 +26,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static readonly int[] Iterations = { 2, 4, 8 };
         /// <summary>Position-based iteration counts of the hydrostatic rows: the default, and enough for the 16-layer column to come to rest at one substep per 1/60 s frame.</summary>
         public static readonly int[] HydrostaticIterations = { 4, 16 };
+        /// <summary>Finest dam-break resolution of the default run, where only the cheapest setting of each solver runs (a run there takes 5–25 s).</summary>
+        public const int StandardFinestResolution = 20;
+        /// <summary>Seconds the hydrostatic columns settle before they are measured: the full run's 10 s, the default run's 3 s (the method text says which).</summary>
+        public const float SettleSeconds = 10f, StandardSettleSeconds = 3f;
         /// <summary>Front error (RMS of Z) a row must reach to count in the summary: the experiment's ±0.07 band in T times the late front speed dZ/dT ≈ 1.4.</summary>
         public const double FrontTolerance = 0.1;
 
@@ -42,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                        $"v = √(2g·2a) = {DamBreakScenario.ReferenceSpeed:0.00} m/s (column: 10·√(2gH); droplet: 5 m/s). PBF: {string.Join(", ", Iterations)} iterations " +
                        $"(column: {string.Join(", ", HydrostaticIterations)}). CFL {FluidParameters.Default.CflNumber}.",
             Load = $"Gravity. Dam break: released at rest, run to T = t√(2g/a) = {DamBreakScenario.EndT} in {1000 * DamBreakScenario.FrameSeconds} ms frames; " +
-                   "column: settled 10 s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion, " +
+                   $"column: settled {SettleSeconds:0} s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion, " +
                    $"flocking ({string.Join(", ", FlockingWeights)}/s²) or Akinci (γ = {string.Join(", ", AkinciTensions)}); hard cases: each its own.",
             Reference = $"Dam break: Martin & Moyce's Table 2 front ({MartinMoyce1952.T.Length} points, T = {MartinMoyce1952.T[0]}…{DamBreakScenario.LastTableT}); " +
                         "column: hydrostatic p = ρ₀g(H − y) in the interior (2h from walls, floor and surface); droplet: a ball (sphericity 1); hard cases: finite and in the box.",
@@ -56,6 +60,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"from 1 s on. Droplet: 'sphericity' = smallest over largest width of the cloud over {DropletScenario.DirectionCount} directions (the cube: 0.60); " +
                 $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
+                $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, the columns settled {StandardSettleSeconds:0} s. " +
                 "Quick run: a/10 with one setting per solver, the WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
             Details = "fluids.md#validation-and-the-study",
@@ -66,15 +71,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
             bool quick = scope == RunScope.Quick;
+            bool standard = scope == RunScope.Standard;
             foreach (int resolution in quick ? new[] { 10 } : Resolutions)
             {
-                bool finest = resolution == FinestResolution;
+                if (standard && resolution > StandardFinestResolution)
+                    break;
+                bool finest = resolution == (standard ? StandardFinestResolution : FinestResolution);
                 foreach (float multiple in quick ? new[] { 5f } : finest ? new[] { SoundMultiples[0] } : SoundMultiples)
                     yield return new DamBreakScenario(resolution, Weak(multiple * DamBreakScenario.ReferenceSpeed), $"c0 = {multiple:0}·v");
                 foreach (int iterations in quick ? new[] { 4 } : finest ? new[] { Iterations[0] } : Iterations)
                     yield return new DamBreakScenario(resolution, PositionBased(iterations), $"{iterations} it");
             }
-            float settle = quick ? 0.5f : 10f;
+            float settle = quick ? 0.5f : standard ? StandardSettleSeconds : SettleSeconds;
             yield return new HydrostaticColumnScenario(Weak(10f * HydrostaticColumnScenario.ReferenceSpeed), "c0 = 10·v", settle);
             if (!quick)
                 foreach (int iterations in HydrostaticIterations)

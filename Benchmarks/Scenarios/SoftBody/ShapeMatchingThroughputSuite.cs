@@ -10,6 +10,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static readonly int[] Edges = { 10, 22, 46 };
         /// <summary>Lattice edge of the quick run: 10³ = 1000 particles.</summary>
         public static readonly int[] QuickEdges = { 10 };
+        /// <summary>Lattice edges of the default run: three sizes for the slope, up to 22³ (the full run goes on to 46³).</summary>
+        public static readonly int[] StandardEdges = { 10, 16, 22 };
 
         public string Name => "ShapeMatchingThroughput";
 
@@ -26,7 +28,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Reference = "none (cost only).",
             Metric = "One item is one particle-iteration (a particle through one substep: predict, cluster solve, floor contact, update), so items/s is particle-iterations per second. " +
                      "'resets': NaN-guard resets (0 expected); 'contacts': mean particles touching the floor (at least the bottom layer, edge²).",
-            Notes = new[] { $"Quick run: {Sizes(QuickEdges)} particles only." },
+            Notes = new[] { $"Default run: {Sizes(StandardEdges)} particles; quick run: {Sizes(QuickEdges)} only." },
             Details = "benchmarks.md#shapematchingthroughput-cost-per-particle-iteration",
         };
 
@@ -39,7 +41,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
             bool quick = scope == RunScope.Quick;
-            foreach (int edge in quick ? QuickEdges : Edges)
+            foreach (int edge in quick ? QuickEdges : scope == RunScope.Standard ? StandardEdges : Edges)
             foreach (ShapeMatchingClusterLayout layout in new[] { ShapeMatchingClusterLayout.Single, ShapeMatchingClusterLayout.Overlapping })
             foreach (ShapeMatchingMode mode in new[] { ShapeMatchingMode.Rigid, ShapeMatchingMode.Linear, ShapeMatchingMode.Quadratic })
                 yield return new ShapeMatchingThroughputScenario(edge, mode, layout);

@@ -44,6 +44,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static readonly int[] Edges = { 10, 22, 46 };
         /// <summary>Nodes per axis of the quick run: 10³ = 1000 nodes.</summary>
         public static readonly int[] QuickEdges = { 10 };
+        /// <summary>Lattice edges of the default run: three sizes for the slope, up to 22³ (the full run goes on to 46³).</summary>
+        public static readonly int[] StandardEdges = { 10, 16, 22 };
 
         /// <summary>The variants in report order.</summary>
         public static IReadOnlyList<Variant> Variants { get; } = new[]
@@ -72,7 +74,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Reference = "none (cost only).",
             Metric = "One item is one particle-substep, so ns/item compares methods and sizes; 'resets': NaN-guard resets in the timed run (0 expected). " +
                      "The summary adds the log–log slope of step time against N (1 = linear).",
-            Notes = new[] { $"Quick run: {Sizes(QuickEdges)} nodes only." },
+            Notes = new[] { $"Default run: {Sizes(StandardEdges)} nodes; quick run: {Sizes(QuickEdges)} only." },
             Details = "choosing-a-method.md#throughput-per-method",
         };
 
@@ -82,7 +84,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>None: throughput has no error reference.</summary>
         public string ErrorMetricForPlot => null;
 
-        public IEnumerable<IScenario> Scenarios(RunScope scope) => Build(scope == RunScope.Quick ? QuickEdges : Edges);
+        public IEnumerable<IScenario> Scenarios(RunScope scope) => Build(scope == RunScope.Quick ? QuickEdges : scope == RunScope.Standard ? StandardEdges : Edges);
 
         static IEnumerable<IScenario> Build(int[] edges)
         {
