@@ -18,9 +18,8 @@ for a in "$@"; do
       exec dotnet "$RUNNER" --help ;;
   esac
 done
-bash "Tools~/setup.sh"
+bash "Tools~/setup.sh" --no-restore
+# One build of the runner and the two lavapipe programs (Tools~/DotNet/MainJob.slnx): restored and compiled in parallel.
 echo "Building the runner and the lavapipe tools ..." >&2
-for p in SoftBodyDynamics.Runner SoftBodyDynamics.LavapipeTiming SoftBodyDynamics.FluidSurfaceRender; do
-  dotnet build "Tools~/DotNet/$p/$p.csproj" -c Release --no-restore --verbosity quiet -nologo >/dev/null
-done
+dotnet build "Tools~/DotNet/MainJob.slnx" -c Release --verbosity quiet -nologo >/dev/null
 exec dotnet "$RUNNER" --root "$ROOT" "$@"

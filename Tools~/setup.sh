@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the headless commands need on a fresh Debian machine with the .NET SDK, and
-# restores the .NET projects. Safe to run any number of times: it installs only what is missing.
+# restores the .NET projects (not with --no-restore: the main job restores what it builds). Safe to run any number of
+# times: it installs only what is missing.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -28,6 +29,7 @@ if ! command -v dotnet >/dev/null 2>&1; then
   exit 1
 fi
 export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
+[ "${1:-}" = "--no-restore" ] && exit 0
 for p in SoftBodyDynamics.Tests.Solvers SoftBodyDynamics.Tests.MathematicsStandIn SoftBodyDynamics.Tests.Runner SoftBodyDynamics.Tests.Compute SoftBodyDynamics.Runner SoftBodyDynamics.MeshWriteBackTiming SoftBodyDynamics.LavapipeTiming SoftBodyDynamics.FluidSurfaceRender; do
   dotnet restore "$ROOT/Tools~/DotNet/$p/$p.csproj" --verbosity quiet >/dev/null
 done

@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Collections.Concurrent;
 using System.Threading.Tasks;
 using SoftBodyDynamics.Benchmarks.Scenarios;
 
@@ -78,7 +79,7 @@ namespace SoftBodyDynamics.Runner
                     {
                         progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
                         long t0 = Stopwatch.GetTimestamp();
-                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget);
+                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
                         double seconds = Seconds(t0);
                         suiteResult.Rows.Add(r);
                         table.PrintRow(r);
@@ -133,10 +134,10 @@ namespace SoftBodyDynamics.Runner
             RunTimings timings, ProgressEstimate estimate, RunClock clock, Report report, TextWriter progress)
         {
             int n = planned.Scenarios.Count;
-            var parallel = new ParallelOptions { MaxDegreeOfParallelism = options.Threads };
             progress.WriteLine($"      {planned.Suite.Name}: setting up {n} scenarios on {options.Threads} threads");
             long t0 = Stopwatch.GetTimestamp();
-            Parallel.For(0, n, parallel, k => planned.Scenarios[k].Scenario.Setup());
+            // Longest first (by the previous run's time, where known), one scenario at a time per thread: the threads finish together.
+            ForEachLongestFirst(n, k => timings.Previous(plan.Keys[index + k]) ?? 0.0, options.Threads, k => planned.Scenarios[k].Scenario.Setup());
             double shared = Seconds(t0);
             var results = new ScenarioResult[n];
             var own = new double[n];
@@ -145,12 +146,13 @@ namespace SoftBodyDynamics.Runner
                 PlannedScenario p = planned.Scenarios[k];
                 progress.WriteLine(Progress(index + k, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
                 long t1 = Stopwatch.GetTimestamp();
-                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget);
+                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
                 own[k] = Seconds(t1);
             }
             progress.WriteLine($"      {planned.Suite.Name}: evaluating {n} scenarios on {options.Threads} threads — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");
             long t2 = Stopwatch.GetTimestamp();
-            Parallel.For(0, n, parallel, k => results[k].Metrics = planned.Scenarios[k].Scenario.Evaluate());
+            // An evaluation runs the scene's frames on the method's step, so the timed step is its cost's measure.
+            ForEachLongestFirst(n, k => results[k].MedianMs, options.Threads, k => results[k].Metrics = planned.Scenarios[k].Scenario.Evaluate());
             shared += Seconds(t2);
             for (int k = 0; k < n; k++)
             {
@@ -164,6 +166,17 @@ namespace SoftBodyDynamics.Runner
             report.Finished = index;
             report.Write(timings);
             return index;
+        }
+
+        /// <summary>
+        /// Runs <paramref name="body"/> for 0…n−1 on <paramref name="threads"/> threads, handing out the costliest item first
+        /// (by <paramref name="cost"/>) and one item at a time, so that no thread is left with a long item at the end.
+        /// </summary>
+        public static void ForEachLongestFirst(int n, Func<int, double> cost, int threads, Action<int> body)
+        {
+            int[] order = Enumerable.Range(0, n).OrderByDescending(cost).ThenBy(k => k).ToArray();
+            Parallel.ForEach(Partitioner.Create(order, EnumerablePartitionerOptions.NoBuffering),
+                new ParallelOptions { MaxDegreeOfParallelism = threads }, k => body(k));
         }
 
         static double Seconds(long t0) => (Stopwatch.GetTimestamp() - t0) / (double)Stopwatch.Frequency;

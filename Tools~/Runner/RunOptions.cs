@@ -47,6 +47,9 @@ namespace SoftBodyDynamics.Runner
         /// </summary>
         public double TimedBudget => Scope == RunScope.Full ? double.PositiveInfinity : DefaultTimedBudget;
 
+        /// <summary>Longest warm-up (s): the full run's, or the shorter one of the other runs.</summary>
+        public double MaxWarmup => Scope == RunScope.Full ? ScenarioTimer.MaxWarmupSeconds : ScenarioTimer.ShortMaxWarmupSeconds;
+
         /// <summary>Seconds of timed steps per scenario outside the full run.</summary>
         public const double DefaultTimedBudget = 3.0;
 

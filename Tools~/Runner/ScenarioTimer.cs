@@ -13,14 +13,16 @@ namespace SoftBodyDynamics.Runner
         const double k_RoundSeconds = 0.1;
         /// <summary>A round whose fastest step is within this fraction of the previous round's counts as settled.</summary>
         const double k_SettledFraction = 0.03;
-        /// <summary>Warm-up never lasts longer than this (s).</summary>
+        /// <summary>Warm-up never lasts longer than this (s) in the full run.</summary>
         public const double MaxWarmupSeconds = 3.0;
+        /// <summary>Warm-up never lasts longer than this (s) outside the full run: a step of a second or more has tiered up by its end.</summary>
+        public const double ShortMaxWarmupSeconds = 1.0;
 
         /// <summary>Setup, warm-up, the timed steps, then the evaluation: one scenario start to end.</summary>
-        public static ScenarioResult Run(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity)
+        public static ScenarioResult Run(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity, double maxWarmup = MaxWarmupSeconds)
         {
             scenario.Setup();
-            ScenarioResult r = Time(scenario, repeats, timedBudget);
+            ScenarioResult r = Time(scenario, repeats, timedBudget, maxWarmup);
             r.Metrics = scenario.Evaluate();
             return r;
         }
@@ -33,9 +35,9 @@ namespace SoftBodyDynamics.Runner
         /// <paramref name="timedBudget"/> (s), the timed steps are cut to what fits it at the warm-up's fastest step, but never
         /// below <see cref="MinRepeats"/>.
         /// </summary>
-        public static ScenarioResult Time(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity)
+        public static ScenarioResult Time(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity, double maxWarmup = MaxWarmupSeconds)
         {
-            double fastest = Warmup(scenario);
+            double fastest = Warmup(scenario, maxWarmup);
             if (fastest > 0 && timedBudget < double.PositiveInfinity)
                 repeats = Math.Max(Math.Min(repeats, MinRepeats), Math.Min(repeats, (int)(timedBudget / fastest)));
 
@@ -71,9 +73,9 @@ namespace SoftBodyDynamics.Runner
         /// and 3 steps have passed and the fastest step of the last round is no more than
         /// <see cref="k_SettledFraction"/> faster than that of the round before: the JIT tiers a method up
         /// (tier 0, instrumented, optimised) some time after its first calls, so the first scenario that runs new
-        /// code needs longer than the others. Stops after <see cref="MaxWarmupSeconds"/> in any case.
+        /// code needs longer than the others. Stops after <paramref name="maxWarmup"/> seconds in any case.
         /// </summary>
-        static double Warmup(IScenario scenario)
+        static double Warmup(IScenario scenario, double maxWarmup)
         {
             double fastest = double.PositiveInfinity;
             var total = Stopwatch.StartNew();
@@ -94,7 +96,7 @@ namespace SoftBodyDynamics.Runner
                 double elapsed = total.Elapsed.TotalSeconds;
                 fastest = Math.Min(fastest, best);
                 bool settled = best >= (1.0 - k_SettledFraction) * previousBest;
-                if (elapsed >= MaxWarmupSeconds || (steps >= 3 && elapsed >= WarmupSeconds && settled))
+                if (elapsed >= maxWarmup || (steps >= 3 && elapsed >= WarmupSeconds && settled))
                     return fastest;
                 previousBest = best;
             }

@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             {
                 SuiteDefinition d = m_Scene.Definition;
                 d.Metric = MethodStudyRanking.ItemNote + " " + d.Metric;
-                var notes = new List<string> { MethodStudyRanking.CostNote };
+                var notes = new List<string> { MethodStudyRanking.CostNote, DefaultRunNote() };
                 if (d.Notes != null)
                     notes.AddRange(d.Notes);
                 d.Notes = notes.ToArray();
@@ -33,10 +33,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string ErrorMetricForPlot => StudyScene.Error;
 
+        /// <summary>What the default run leaves out of this scene (the points only --full runs), by method.</summary>
+        string DefaultRunNote()
+        {
+            var standard = new HashSet<string>(Scenarios(RunScope.Standard).Select(s => s.Method));
+            var left = Scenarios(RunScope.Full).Select(s => s.Method).Where(m => !standard.Contains(m))
+                .GroupBy(MethodStudyRanking.Family)
+                .Select(g => $"{g.Key} ({string.Join(", ", g.Select(MethodStudyRanking.Knob))})").ToList();
+            return left.Count == 0 ? "The default run runs every point of the full study." : "The default run leaves out (--full runs them): " + string.Join("; ", left) + ".";
+        }
+
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
             foreach (MethodVariant v in MethodCatalog.Variants)
-            foreach (int resolution in v.ResolutionsOf(scope, m_Scene.MaxResolution))
+            foreach (int resolution in v.ResolutionsOf(scope, m_Scene.MaxResolution, m_Scene.StandardMaxResolution(v)))
             foreach (int knob in v.KnobsOf(scope))
                 yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }

@@ -41,12 +41,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Knob values a run of <paramref name="scope"/> sweeps.</summary>
         public int[] KnobsOf(RunScope scope) => scope == RunScope.Quick ? QuickKnobs : scope == RunScope.Standard ? StandardKnobs : Knobs;
 
-        /// <summary>Resolutions a run of <paramref name="scope"/> sweeps, none finer than <paramref name="maxResolution"/>; {0} (the scene's default) when the variant sweeps none or the run is quick.</summary>
-        public int[] ResolutionsOf(RunScope scope, int maxResolution)
+        /// <summary>
+        /// Resolutions a run of <paramref name="scope"/> sweeps, none finer than <paramref name="maxResolution"/> nor, in the default
+        /// run, <paramref name="standardMaxResolution"/> (0 = no cap); {0} (the scene's default) when the variant sweeps none or the run is quick.
+        /// </summary>
+        public int[] ResolutionsOf(RunScope scope, int maxResolution, int standardMaxResolution)
         {
             if (Resolutions.Length == 0 || scope == RunScope.Quick)
                 return new[] { 0 };
-            int cap = scope == RunScope.Standard && StandardMaxResolution > 0 ? Math.Min(maxResolution, StandardMaxResolution) : maxResolution;
+            int cap = scope == RunScope.Standard && standardMaxResolution > 0 ? Math.Min(maxResolution, standardMaxResolution) : maxResolution;
             return Array.FindAll(Resolutions, n => n <= cap);
         }
 

@@ -39,6 +39,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public virtual int MaxResolution => int.MaxValue;
 
+        /// <summary>
+        /// Finest resolution of a variant's sweep in the default run (0 = no cap): the variant's own cap, which a scene where a
+        /// point costs minutes lowers.
+        /// </summary>
+        public virtual int StandardMaxResolution(MethodVariant variant) => variant.StandardMaxResolution;
+
         static readonly Dictionary<(Type Scene, int CellsAcross), MethodBodySetup> s_Setups = new Dictionary<(Type, int), MethodBodySetup>();
 
         /// <summary>The body of this scene at <paramref name="cellsAcross"/>, built by <paramref name="create"/> once per scene type and resolution.</summary>
