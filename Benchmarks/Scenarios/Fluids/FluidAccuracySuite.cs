@@ -60,7 +60,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"from 1 s on. Droplet: 'sphericity' = smallest over largest width of the cloud over {DropletScenario.DirectionCount} directions (the cube: 0.60); " +
                 $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
-                $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, the columns settled {StandardSettleSeconds:0} s. " +
+                $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, the columns settled {StandardSettleSeconds:0} s, " +
+                $"droplets without cohesion, with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
                 "Quick run: a/10 with one setting per solver, the WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
             Details = "fluids.md#validation-and-the-study",
@@ -87,7 +88,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             if (!quick)
                 foreach (int iterations in HydrostaticIterations)
                     yield return new HydrostaticColumnScenario(PositionBased(iterations), $"{iterations} it", settle);
-            foreach (var (parameters, setting) in Droplets(quick))
+            foreach (var (parameters, setting) in Droplets(scope))
                 yield return new DropletScenario(parameters, setting, quick ? 1f : 2f);
             foreach (IScenario hardCase in FluidHardCaseScenario.All(quick))
                 yield return hardCase;
@@ -111,13 +112,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return p;
         }
 
-        /// <summary>Droplet rows: no cohesion (the control), flocking at two cohesion weights and Akinci at two γ (the quick run: the first flocking row).</summary>
-        static IEnumerable<(FluidParameters, string)> Droplets(bool quick)
+        /// <summary>
+        /// Droplet rows: no cohesion (the control), flocking at two cohesion weights and Akinci at two γ; the default run takes
+        /// the first weight and γ (each compared with the control for the cost of cohesion), the quick run the first flocking row.
+        /// </summary>
+        static IEnumerable<(FluidParameters, string)> Droplets(RunScope scope)
         {
+            bool quick = scope == RunScope.Quick, full = scope == RunScope.Full;
             FluidParameters none = Weak(5f);
             if (!quick)
                 yield return (none, "no cohesion");
-            foreach (float weight in quick ? new[] { FlockingWeights[0] } : FlockingWeights)
+            foreach (float weight in full ? FlockingWeights : new[] { FlockingWeights[0] })
             {
                 FluidParameters flocking = none;
                 flocking.Cohesion = FluidCohesionModel.Flocking;
@@ -127,7 +132,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             if (quick)
                 yield break;
-            foreach (float tension in AkinciTensions)
+            foreach (float tension in full ? AkinciTensions : new[] { AkinciTensions[0] })
             {
                 FluidParameters akinci = none;
                 akinci.Cohesion = FluidCohesionModel.Akinci;

@@ -73,7 +73,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             {
                 $"'{FrequencyError}', '{DampingError}': frequency and damping ratio of a separate free oscillation of the fully resisted mode (fitted by Prony) over the parameters, " +
                 "minus 1; exact but for float32 round-off (≈ 1e-6). Quadratic goals on 4³ clusters have no such mode, so no values.",
-                $"Quick run: {string.Join(", ", QuickSubstepCounts)} substeps for rigid (1 cluster) and linear (4³ clusters), reference at 1/{60 * 2 * QuickReferenceStepsPerFrame} s.",
+                $"Default run: {string.Join(", ", QuickSubstepCounts)} substeps for every family. Quick run: the same for rigid (1 cluster) and linear (4³ clusters), reference at 1/{60 * 2 * QuickReferenceStepsPerFrame} s.",
             },
             Details = "accuracy.md#convergence-error-against-cost",
         };
@@ -92,7 +92,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
             bool quick = scope == RunScope.Quick;
-            int[] counts = quick ? QuickSubstepCounts : SubstepCounts;
+            int[] counts = quick || scope == RunScope.Standard ? QuickSubstepCounts : SubstepCounts;
             int referenceSteps = quick ? QuickReferenceStepsPerFrame : ConvergenceStudy.ReferenceStepsPerFrame;
             foreach ((ShapeMatchingMode mode, ShapeMatchingClusterLayout layout) in quick ? s_QuickFamilies : s_Families)
                 for (int k = 0; k < counts.Length; k++)
@@ -104,7 +104,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             bool quick = scope == RunScope.Quick;
             var families = rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
-            int[] counts = quick ? QuickSubstepCounts : SubstepCounts;
+            int[] counts = quick || scope == RunScope.Standard ? QuickSubstepCounts : SubstepCounts;
             var md = new StringBuilder();
             md.AppendLine("Trajectory error against the float64 reference (observed order against the previous column in brackets):");
             md.AppendLine();
