@@ -46,8 +46,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public override Promise Promise => Promise.AccuracyCost;
         /// <summary>Scene, e.g. "Cantilever".</summary>
         public string Scene;
-        /// <summary>The error judged (e.g. "worst of tip sag and frequency").</summary>
+        /// <summary>The error judged, in words (e.g. "worst of tip sag and frequency").</summary>
         public string Error;
+        /// <summary>The metric the error is (the suite's figure is linked when it plots this metric).</summary>
+        public string Metric;
         /// <summary>Unit of the error and the thresholds.</summary>
         public MetricUnit ErrorUnit = MetricUnit.Fraction;
         /// <summary>Unit of <see cref="ThresholdReach.Cost"/>, e.g. "ms per 1/60 s frame".</summary>
@@ -65,10 +67,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// A finding from rows: per threshold the cheapest row whose <paramref name="error"/> is within it; rows with a NaN error
         /// (diverged) never count.
         /// </summary>
-        public static AccuracyFinding FromRows(string scene, string errorText, IReadOnlyList<ScenarioOutcome> rows, double[] thresholds,
-            System.Func<ScenarioOutcome, double> error, System.Func<ScenarioOutcome, double> cost, System.Func<ScenarioOutcome, string> setting,
-            string costUnit, MetricUnit errorUnit = MetricUnit.Fraction)
+        public static AccuracyFinding FromRows(string scene, string errorText, string metric, IReadOnlyList<ScenarioOutcome> rows, double[] thresholds,
+            System.Func<ScenarioOutcome, double> cost, System.Func<ScenarioOutcome, string> setting, string costUnit,
+            MetricUnit errorUnit = MetricUnit.Fraction)
         {
+            double error(ScenarioOutcome r) => r.Value(metric);
             var reaches = new List<ThresholdReach>();
             foreach (double t in thresholds)
             {
@@ -98,7 +101,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             return new AccuracyFinding
             {
-                Scene = scene, Error = errorText, ErrorUnit = errorUnit, CostUnit = costUnit, Reaches = reaches,
+                Scene = scene, Error = errorText, Metric = metric, ErrorUnit = errorUnit, CostUnit = costUnit, Reaches = reaches,
                 BestError = bestError, BestSetting = bestSetting,
             };
         }
@@ -115,6 +118,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public int Passed, Total;
         /// <summary>The cases not passed, with what happened (e.g. "huge step: diverged").</summary>
         public IReadOnlyList<string> Failed;
+        /// <summary>When a case counts as passed, in words (the same for a whole group).</summary>
+        public string Criterion;
     }
 
     /// <summary>What one effect costs per frame, measured with and without it.</summary>

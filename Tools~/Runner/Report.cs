@@ -71,7 +71,7 @@ namespace SoftBodyDynamics.Runner
                 md.AppendLine($"> **Partial report:** {Finished} of {m_Planned} steps finished (the run is going on, or was interrupted). Sections below are complete for the steps listed.").AppendLine();
 
             var finished = Suites.Where(s => s.Finished).ToList();
-            SummaryWriter.Write(md, finished, Parts);
+            SummaryWriter.Write(md, finished, Parts, m_Options.Scope);
 
             md.AppendLine("## Machine and method");
             md.AppendLine();

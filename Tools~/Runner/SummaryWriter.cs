@@ -20,10 +20,14 @@ namespace SoftBodyDynamics.Runner
             EffectNames.FluidRenderer,
         };
 
-        public static void Write(StringBuilder md, IReadOnlyList<SuiteResult> suites, IReadOnlyList<PartResult> parts)
+        public static void Write(StringBuilder md, IReadOnlyList<SuiteResult> suites, IReadOnlyList<PartResult> parts, RunScope scope = RunScope.Full)
         {
             md.AppendLine("## Summary");
             md.AppendLine();
+            if (scope == RunScope.Standard)
+                md.AppendLine("*Default run: every suite, with its sweep cut to the cheaper points; each suite's definition says what `--full` adds.*").AppendLine();
+            else if (scope == RunScope.Quick)
+                md.AppendLine("*Quick run: a few points of each suite, a smoke test; the numbers below are not the study's.*").AppendLine();
             var accuracy = new List<(AccuracyFinding Finding, SuiteResult Suite)>();
             var hard = new List<(HardCaseFinding Finding, SuiteResult Suite)>();
             var effects = new Dictionary<string, (EffectFinding Finding, SuiteResult Suite)>();
@@ -56,7 +60,7 @@ namespace SoftBodyDynamics.Runner
                 foreach (ThresholdReach r in f.Reaches)
                     md.Append(r.Reached ? $" {Report.Cell(r.Setting)}: **{Cost(r.Cost)} {f.CostUnit}** |" : " not reached |");
                 md.Append(double.IsNaN(f.BestError) ? " every setting diverged |" : $" {Error(f.BestError, f.ErrorUnit)} ({Report.Cell(f.BestSetting)}) |");
-                string figure = s.AccuracyFigure;
+                string figure = f.Metric == s.Suite.ErrorMetricForPlot ? s.AccuracyFigure : null;
                 md.AppendLine(figure != null ? $" [figure]({figure}) |" : " – |");
             }
             md.AppendLine();
@@ -77,7 +81,8 @@ namespace SoftBodyDynamics.Runner
             {
                 int all = group.Count(g => g.Finding.Passed == g.Finding.Total);
                 string suite = group.First().Suite.Suite.Name;
-                md.Append($"- [{group.Key}](#{Report.Slug(suite)}): {all} of {group.Count()} pass every case. ");
+                string criterion = group.First().Finding.Criterion;
+                md.Append($"- [{group.Key}](#{Report.Slug(suite)}): {all} of {group.Count()} pass every case{(string.IsNullOrEmpty(criterion) ? "" : $" ({criterion})")}. ");
                 md.AppendLine(string.Join("; ", group.Select(g => $"{g.Finding.Method} {g.Finding.Passed}/{g.Finding.Total}" +
                     (g.Finding.Failed != null && g.Finding.Failed.Count > 0 ? $" ({string.Join(", ", g.Finding.Failed)})" : ""))) + ".");
             }

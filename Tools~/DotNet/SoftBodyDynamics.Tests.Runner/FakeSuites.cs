@@ -72,8 +72,8 @@ namespace SoftBodyDynamics.Tests.Runner
 
         public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
-            yield return AccuracyFinding.FromRows("Fake scene", "err", rows, AccuracyFinding.RelativeThresholds,
-                r => r.Value("err"), r => r.NsPerItem * r.Size * 1e-6, r => r.Method, "ms/frame");
+            yield return AccuracyFinding.FromRows("Fake scene", "err", "err", rows, AccuracyFinding.RelativeThresholds,
+                r => r.NsPerItem * r.Size * 1e-6, r => r.Method, "ms/frame");
         }
     }
 }

@@ -285,8 +285,8 @@ namespace SoftBodyDynamics.Tests.Runner
                 Row("c", 0.03, 9000),          // within 5 % but dearer
                 Row("d", double.NaN, 1),       // diverged: never counts, however cheap
             };
-            AccuracyFinding f = AccuracyFinding.FromRows("s", "err", rows, AccuracyFinding.RelativeThresholds,
-                r => r.Value("err"), r => r.NsPerItem * r.Size * 1e-6, r => r.Method, "ms");
+            AccuracyFinding f = AccuracyFinding.FromRows("s", "err", "err", rows, AccuracyFinding.RelativeThresholds,
+                r => r.NsPerItem * r.Size * 1e-6, r => r.Method, "ms");
             Assert.AreEqual("a", f.Reaches[0].Setting);
             Assert.AreEqual(0.1, f.Reaches[0].Cost, 1e-12);
             Assert.AreEqual("b", f.Reaches[1].Setting);
@@ -299,8 +299,8 @@ namespace SoftBodyDynamics.Tests.Runner
         [Test]
         public void AccuracyFinding_EveryRowDiverged_HasNoBest()
         {
-            AccuracyFinding f = AccuracyFinding.FromRows("s", "err", new[] { Row("a", double.NaN, 1) }, AccuracyFinding.RelativeThresholds,
-                r => r.Value("err"), r => r.NsPerItem, r => r.Method, "ms");
+            AccuracyFinding f = AccuracyFinding.FromRows("s", "err", "err", new[] { Row("a", double.NaN, 1) }, AccuracyFinding.RelativeThresholds,
+                r => r.NsPerItem, r => r.Method, "ms");
             Assert.IsTrue(double.IsNaN(f.BestError));
             Assert.IsNull(f.BestSetting);
         }
@@ -328,6 +328,23 @@ namespace SoftBodyDynamics.Tests.Runner
             var md = new System.Text.StringBuilder();
             SummaryWriter.Write(md, new[] { suite }, new PartResult[0]);
             StringAssert.Contains("- [Soft bodies](#fakehard): 1 of 2 pass every case. A 4/4; B 3/4 (huge step: diverged).", md.ToString());
+            Assert.AreEqual(1, System.Text.RegularExpressions.Regex.Matches(md.ToString(), "Soft bodies").Count);
+        }
+
+        [Test]
+        public void AccuracyRow_LinksTheSuitesFigure_OnlyWhenTheFigurePlotsItsMetric()
+        {
+            var suite = new SuiteResult(new FakeSuite("FakeFigure"));
+            suite.Figures.Add(("FakeFigure-accuracy-vs-cost.png", "alt", "caption"));
+            var rows = new[] { Row("a", 0.1, 1000) };
+            suite.Findings.Add(AccuracyFinding.FromRows("plotted", "err", "err", rows, AccuracyFinding.RelativeThresholds, r => 1.0, r => r.Method, "ms"));
+            suite.Findings.Add(AccuracyFinding.FromRows("other", "tip", "tip", rows, AccuracyFinding.RelativeThresholds, r => 1.0, r => r.Method, "ms"));
+            suite.Finished = true;
+            var md = new System.Text.StringBuilder();
+            SummaryWriter.Write(md, new[] { suite }, new PartResult[0]);
+            string[] lines = md.ToString().Split('\n');
+            StringAssert.EndsWith("[figure](FakeFigure-accuracy-vs-cost.png) |", lines.First(l => l.StartsWith("| [plotted]", StringComparison.Ordinal)));
+            StringAssert.EndsWith("| – |", lines.First(l => l.StartsWith("| [other]", StringComparison.Ordinal)));
         }
 
         [TestCase("FluidAccuracy", "fluidaccuracy")]

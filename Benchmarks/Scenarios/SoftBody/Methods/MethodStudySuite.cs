@@ -61,7 +61,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
-            yield return MethodStudyFindings.Accuracy(Name.Replace("MethodStudy", ""), rows);
+            yield return MethodStudyFindings.Accuracy(Name.Replace("MethodStudy", "").Replace("Csm3", "CSM3"), rows);
         }
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
