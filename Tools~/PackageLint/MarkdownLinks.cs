@@ -86,7 +86,11 @@ namespace SoftBodyDynamics.PackageLint
                     yield return (n.Groups[1].Success ? n.Groups[1].Value : n.Groups[2].Value, line);
             }
             foreach (Match m in s_Definition.Matches(prose)) yield return (m.Groups[1].Value, LineOf(prose, m.Index));
+            foreach (Match m in s_HtmlSource.Matches(prose)) yield return (m.Groups[1].Value, LineOf(prose, m.Index));
         }
+
+        /// <summary>HTML images and links in Markdown: &lt;img src="…"&gt;, &lt;a href="…"&gt;.</summary>
+        static readonly Regex s_HtmlSource = new Regex(@"<(?:img|a)\s[^>]*\b(?:src|href)\s*=\s*[""']([^""']+)[""']", RegexOptions.IgnoreCase);
 
         static int LineOf(string text, int index)
         {
