@@ -53,11 +53,32 @@ namespace SoftBodyDynamics.Runner
             progress.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
 
             int index = 0;
-            if (plan.Preparations.Count > 0)
+            if (plan.HasPreparation)
             {
-                progress.WriteLine(Progress(index, plan.Count, $"references of {string.Join(", ", plan.Preparations.Select(s => s.Name))} on {options.Threads} threads", clock, estimate));
+                // Everything untimed that the timed steps need, at once on the worker threads: the suites' shared references,
+                // then the setup of every scenario of the independent suites, each handed out longest first.
+                var work = new List<(Action Run, double Cost)>();
+                foreach (IScenarioSuite s in plan.Preparations)
+                    work.Add((((IScenarioSuitePreparation)s).Prepare, double.PositiveInfinity));
+                int setups = 0;
+                for (int k = 0, key = 1; k < plan.Suites.Count; k++)
+                {
+                    PlannedSuite ps = plan.Suites[k];
+                    bool concurrent = SetUpConcurrently(ps, options);
+                    foreach (PlannedScenario p in ps.Scenarios)
+                    {
+                        if (concurrent)
+                        {
+                            IScenario sc = p.Scenario;
+                            work.Add((sc.Setup, timings.Previous(plan.Keys[key]) ?? 0.0));
+                            setups++;
+                        }
+                        key++;
+                    }
+                }
+                progress.WriteLine(Progress(index, plan.Count, $"preparing: the references of {plan.Preparations.Count} scenes and the setup of {setups} scenarios, on {options.Threads} threads", clock, estimate));
                 long t0 = Stopwatch.GetTimestamp();
-                Parallel.ForEach(plan.Preparations, new ParallelOptions { MaxDegreeOfParallelism = options.Threads }, s => ((IScenarioSuitePreparation)s).Prepare());
+                ForEachLongestFirst(work.Count, k => work[k].Cost, options.Threads, k => work[k].Run());
                 double seconds = Seconds(t0);
                 timings.Record(plan.Keys[index], seconds);
                 estimate.Finished(index, seconds);
@@ -72,7 +93,7 @@ namespace SoftBodyDynamics.Runner
                 var table = new TablePrinter(output, planned.Scenarios.Select(p => p.Scenario));
                 if (planned.Scenarios.Count > 0)
                     table.PrintHeader();
-                if (planned.Suite is IScenarioSuiteIndependent && options.Threads > 1 && planned.Scenarios.Count > 1)
+                if (SetUpConcurrently(planned, options))
                     index = RunConcurrently(planned, suiteResult, options, plan, index, table, timings, estimate, clock, report, progress);
                 else
                     foreach (PlannedScenario p in planned.Scenarios)
@@ -125,20 +146,20 @@ namespace SoftBodyDynamics.Runner
         static int Repeats(IScenario scenario, RunOptions options) =>
             scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
 
+        /// <summary>True for a suite whose scenarios were set up in the preparation step and are evaluated on worker threads.</summary>
+        internal static bool SetUpConcurrently(PlannedSuite planned, RunOptions options) =>
+            planned.Suite is IScenarioSuiteIndependent && options.Threads > 1 && planned.Scenarios.Count > 1;
+
         /// <summary>
-        /// A suite of independent scenarios: every Setup on <see cref="RunOptions.Threads"/> worker threads, then each scenario's
-        /// warm-up and timed steps one at a time with nothing else running, then every evaluation on the worker threads. Each
-        /// scenario's time in timings.csv is its own timing plus its share of the two concurrent phases. Returns the next step index.
+        /// A suite of independent scenarios, set up in the preparation step: each scenario's warm-up and timed steps one at a
+        /// time with nothing else running, then every evaluation on <see cref="RunOptions.Threads"/> worker threads. Each
+        /// scenario's time in timings.csv is its own timing plus its share of the evaluation. Returns the next step index.
         /// </summary>
         static int RunConcurrently(PlannedSuite planned, SuiteResult suiteResult, RunOptions options, RunPlan plan, int index, TablePrinter table,
             RunTimings timings, ProgressEstimate estimate, RunClock clock, Report report, TextWriter progress)
         {
             int n = planned.Scenarios.Count;
-            progress.WriteLine($"      {planned.Suite.Name}: setting up {n} scenarios on {options.Threads} threads");
-            long t0 = Stopwatch.GetTimestamp();
-            // Longest first (by the previous run's time, where known), one scenario at a time per thread: the threads finish together.
-            ForEachLongestFirst(n, k => timings.Previous(plan.Keys[index + k]) ?? 0.0, options.Threads, k => planned.Scenarios[k].Scenario.Setup());
-            double shared = Seconds(t0);
+            double shared = 0;
             var results = new ScenarioResult[n];
             var own = new double[n];
             for (int k = 0; k < n; k++)
@@ -231,6 +252,8 @@ namespace SoftBodyDynamics.Runner
         public readonly List<ReportPart> Parts = new List<ReportPart>();
         /// <summary>Suites whose shared work (<see cref="IScenarioSuitePreparation"/>) runs first, all at once on worker threads.</summary>
         public readonly List<IScenarioSuite> Preparations = new List<IScenarioSuite>();
+        /// <summary>True when the run starts with the preparation step (references, and the setup of independent suites).</summary>
+        public bool HasPreparation;
         /// <summary>Timing key of each step, in run order.</summary>
         public readonly List<string> Keys = new List<string>();
         public int Count => Keys.Count;
@@ -264,8 +287,10 @@ namespace SoftBodyDynamics.Runner
                 if (suite is IScenarioSuitePreparation && planned.Scenarios.Count > 0)
                     plan.Preparations.Add(suite);
             }
-            if (plan.Preparations.Count > 0)
-                plan.Keys[0] = RunTimings.Key("references", string.Join(", ", plan.Preparations.Select(s => s.Name)) + ", " + RunOptions.ScopeName(options.Scope));
+            plan.HasPreparation = plan.Preparations.Count > 0 || plan.Suites.Any(s => Program.SetUpConcurrently(s, options));
+            if (plan.HasPreparation)
+                plan.Keys[0] = RunTimings.Key("preparing", string.Join(", ", plan.Suites.Where(s => plan.Preparations.Contains(s.Suite) || Program.SetUpConcurrently(s, options))
+                    .Select(s => s.Suite.Name)) + ", " + RunOptions.ScopeName(options.Scope));
             else
                 plan.Keys.RemoveAt(0);
             // The report parts run only when no --method narrows the run, and with --filter only when it names them.

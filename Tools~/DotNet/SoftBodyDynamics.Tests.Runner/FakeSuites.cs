@@ -27,8 +27,12 @@ namespace SoftBodyDynamics.Tests.Runner
         public long ItemsPerStep => Size;
         public int MaxRepeats => 3;
 
+        /// <summary>How many times Setup ran.</summary>
+        public int Setups;
+
         public void Setup()
         {
+            Setups++;
             if (m_Throw)
                 throw new InvalidOperationException("the run stops here");
         }
@@ -41,6 +45,17 @@ namespace SoftBodyDynamics.Tests.Runner
             new Metric("tip", 0.25, MetricUnit.Metre),
             new Metric("resets", 0, MetricUnit.Count),
         };
+    }
+
+    /// <summary>The fake suite as one whose scenarios share nothing: set up in the preparation step, evaluated on threads.</summary>
+    sealed class IndependentFakeSuite : IScenarioSuite, IScenarioSuiteIndependent
+    {
+        readonly FakeSuite m_Inner;
+        public IndependentFakeSuite(string name, params IScenario[] scenarios) { m_Inner = new FakeSuite(name, scenarios); }
+        public string Name => m_Inner.Name;
+        public SuiteDefinition Definition => m_Inner.Definition;
+        public string ErrorMetricForPlot => m_Inner.ErrorMetricForPlot;
+        public IEnumerable<IScenario> Scenarios(RunScope scope) => m_Inner.Scenarios(scope);
     }
 
     /// <summary>A suite of fake scenarios that reports one accuracy finding (cost: µs per step of the body, as the method study counts it).</summary>

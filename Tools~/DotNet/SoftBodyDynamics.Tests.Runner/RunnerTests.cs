@@ -250,6 +250,26 @@ namespace SoftBodyDynamics.Tests.Runner
         }
 
         [Test]
+        public void IndependentSuite_IsSetUpOnceInThePreparationStep_AndReportsEveryRow()
+        {
+            var a = new FakeScenario("a; 1 substeps", 10, 0.5);
+            var b = new FakeScenario("b; 2 substeps", 10, 0.2);
+            var suite = new IndependentFakeSuite("FakeIndependent", a, b);
+            string dir = OutDir();
+            var progress = new StringWriter();
+            var options = new RunOptions { OutDir = dir, Scope = RunScope.Standard, Repeats = 3, Threads = 2 };
+            Assert.AreEqual(0, Program.Run(options, new IScenarioSuite[] { suite }, new ReportPart[0], new StringWriter(), progress));
+            Assert.AreEqual(1, a.Setups);
+            Assert.AreEqual(1, b.Setups);
+            string[] lines = progress.ToString().Split('\n').Where(l => l.StartsWith("[", StringComparison.Ordinal)).ToArray();
+            StringAssert.StartsWith("[1/3] preparing: the references of 0 scenes and the setup of 2 scenarios", lines[0]);
+            StringAssert.StartsWith("[2/3] FakeIndependent: a; 1 substeps", lines[1]);
+            string md = File.ReadAllText(Path.Combine(dir, "report.md"));
+            StringAssert.Contains("| a; 1 substeps | 10 particles |", md);
+            StringAssert.Contains("| b; 2 substeps | 10 particles |", md);
+        }
+
+        [Test]
         public void MethodFilter_KeepsOnlyMatchingScenarios_AndSkipsTheReportParts()
         {
             var options = new RunOptions { Method = "dear" };

@@ -50,12 +50,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// within 5 % on the cantilever (the study's finding), 6 only shows it crossing the reference.
         /// </summary>
         const int StandardMassSpringResolution = 5;
-        /// <summary>
-        /// Explicit FEM is left out of the default run's scenes: at 128 and 256 substeps it diverges on the cantilever and CSM3 and costs
-        /// tens of seconds per point; its largest stable step against the explicit limit is in <see cref="MethodStudyStabilitySuite"/>,
-        /// which the default run keeps, and <see cref="RunScope.Full"/> runs it on every scene.
-        /// </summary>
-        static readonly int[] s_NotInStandard = new int[0];
         /// <summary>XPBD iterations per substep of the resolution-swept Neo-Hookean XPBD (with 64 substeps: 256 projections per step).</summary>
         const int XpbdIterations = 4;
 
@@ -78,7 +72,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodVariant("MS XPBD", "substeps", s_XpbdKnobs, new[] { 4 },
                 (s, k, h) => new MassSpringMethodBody(s, MassSpringIntegrator.Xpbd, k)),
             new MethodVariant("FEM co-rotational explicit", "substeps", s_ExplicitFemKnobs, new int[0],
-                (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.SymplecticEuler, k), standardKnobs: s_NotInStandard),
+                (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.SymplecticEuler, k)),
             new MethodVariant("FEM co-rotational implicit", "substeps", new[] { 1 }, new[] { 1 },
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_Resolutions, standardMaxResolution: StandardFemResolution),
@@ -86,7 +80,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_NeoHookeanImplicitResolutions, standardMaxResolution: StandardFemResolution),
             new MethodVariant("FEM Neo-Hookean explicit", "substeps", s_ExplicitFemKnobs, new int[0],
-                (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.SymplecticEuler, k), standardKnobs: s_NotInStandard),
+                (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.SymplecticEuler, k)),
             new MethodVariant("FEM Neo-Hookean XPBD", "substeps", new[] { 64 }, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.Xpbd, k, iterations: XpbdIterations), s_XpbdResolutions,
                 standardMaxResolution: StandardFemResolution),

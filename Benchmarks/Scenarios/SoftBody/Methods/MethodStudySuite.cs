@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var standard = new HashSet<string>(Scenarios(RunScope.Standard).Select(s => s.Method));
             var left = Scenarios(RunScope.Full).Select(s => s.Method).Where(m => !standard.Contains(m))
                 .GroupBy(MethodStudyRanking.Family)
-                .Select(g => $"{g.Key} ({string.Join(", ", g.Select(MethodStudyRanking.Knob))})").ToList();
+                .Select(g => $"{g.Key} ({string.Join(" / ", g.Select(MethodStudyRanking.Knob))})").ToList();
             return left.Count == 0 ? "The default run runs every point of the full study." : "The default run leaves out (--full runs them): " + string.Join("; ", left) + ".";
         }
 
@@ -47,7 +47,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             foreach (MethodVariant v in MethodCatalog.Variants)
             foreach (int resolution in v.ResolutionsOf(scope, m_Scene.MaxResolution, m_Scene.StandardMaxResolution(v)))
-            foreach (int knob in v.KnobsOf(scope))
+            foreach (int knob in scope == RunScope.Standard ? m_Scene.StandardKnobs(v) : v.KnobsOf(scope))
                 yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }
 

@@ -45,6 +45,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public virtual int StandardMaxResolution(MethodVariant variant) => variant.StandardMaxResolution;
 
+        /// <summary>Knob values of a variant in the default run: the variant's own, which a scene where they only diverge at great cost leaves out.</summary>
+        public virtual int[] StandardKnobs(MethodVariant variant) => variant.StandardKnobs;
+
+        /// <summary>True for the explicit FEM variants, which diverge on the beams at the study's substep counts.</summary>
+        protected static bool IsExplicitFem(MethodVariant variant) =>
+            variant.Family.StartsWith("FEM", StringComparison.Ordinal) && variant.Family.EndsWith("explicit", StringComparison.Ordinal);
+
         static readonly Dictionary<(Type Scene, int CellsAcross), MethodBodySetup> s_Setups = new Dictionary<(Type, int), MethodBodySetup>();
 
         /// <summary>The body of this scene at <paramref name="cellsAcross"/>, built by <paramref name="create"/> once per scene type and resolution.</summary>
