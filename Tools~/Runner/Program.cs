@@ -46,8 +46,8 @@ namespace SoftBodyDynamics.Runner
             string dir = Path.GetFullPath(options.OutDir);
             Directory.CreateDirectory(dir);
             RunPlan plan = RunPlan.Build(options, suites, parts);
-            var timings = RunTimings.Load(dir);
-            var estimate = new ProgressEstimate(timings, plan.Keys);
+            var timings = RunTimings.Load(dir, Path.Combine(Path.GetFullPath(options.Root), "Tools~", "Runner", ReferenceTimings));
+            var estimate = new ProgressEstimate(timings, plan.Keys, plan.HasPreparation ? 0 : -1);
             var clock = RunClock.Start();
             var report = new Report(options, dir, plan.Count);
             progress.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
@@ -78,7 +78,15 @@ namespace SoftBodyDynamics.Runner
                 }
                 progress.WriteLine(Progress(index, plan.Count, $"preparing: the references of {plan.Preparations.Count} scenes and the setup of {setups} scenarios, on {options.Threads} threads", clock, estimate));
                 long t0 = Stopwatch.GetTimestamp();
-                ForEachLongestFirst(work.Count, k => work[k].Cost, options.Threads, k => work[k].Run());
+                int done = 0, tenth = Math.Max(1, work.Count / 10);
+                ForEachLongestFirst(work.Count, k => work[k].Cost, options.Threads, k =>
+                {
+                    work[k].Run();
+                    int d = System.Threading.Interlocked.Increment(ref done);
+                    if (d % tenth == 0 || d == work.Count)
+                        lock (progress)
+                            progress.WriteLine($"      preparing: {d} of {work.Count} done — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");
+                });
                 double seconds = Seconds(t0);
                 timings.Record(plan.Keys[index], seconds);
                 estimate.Finished(index, seconds);
@@ -142,6 +150,9 @@ namespace SoftBodyDynamics.Runner
             progress.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
             return report.Parts.Any(p => !p.Succeeded) ? 1 : 0;
         }
+
+        /// <summary>Timings of a reference run on the 2-core machine (Tools~/Runner), for the estimate of a first run.</summary>
+        public const string ReferenceTimings = "reference-timings.csv";
 
         static int Repeats(IScenario scenario, RunOptions options) =>
             scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;

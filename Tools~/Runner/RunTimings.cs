@@ -22,11 +22,21 @@ namespace SoftBodyDynamics.Runner
 
         public static RunTimings Empty() => new RunTimings(new Dictionary<string, double>());
 
-        /// <summary>The timings of the previous run in <paramref name="dir"/>; empty when there is none or it cannot be read.</summary>
-        public static RunTimings Load(string dir)
+        /// <summary>
+        /// The timings of the previous run in <paramref name="dir"/>, over those of <paramref name="reference"/> (a file of the
+        /// same form: timings of a reference run, so that a first run has an estimate too); empty where neither has a step.
+        /// </summary>
+        public static RunTimings Load(string dir, string reference = null)
         {
             var previous = new Dictionary<string, double>();
-            string path = Path.Combine(dir, FileName);
+            if (reference != null)
+                Read(reference, previous);
+            Read(Path.Combine(dir, FileName), previous);
+            return new RunTimings(previous);
+        }
+
+        static void Read(string path, Dictionary<string, double> previous)
+        {
             if (File.Exists(path))
             {
                 foreach (string line in File.ReadLines(path))
@@ -40,7 +50,6 @@ namespace SoftBodyDynamics.Runner
                         previous[Unquote(line.Substring(0, comma))] = s;
                 }
             }
-            return new RunTimings(previous);
         }
 
         /// <summary>The key of one step of a run: suite and scenario text, stable from run to run.</summary>
@@ -80,20 +89,26 @@ namespace SoftBodyDynamics.Runner
     {
         readonly RunTimings m_Timings;
         readonly IReadOnlyList<string> m_Keys;
+        readonly int m_ExcludedFromMean;
         double m_FinishedSeconds, m_FinishedPrevious, m_FinishedWithPrevious;
         int m_Finished;
 
-        public ProgressEstimate(RunTimings timings, IReadOnlyList<string> keys)
+        /// <param name="excludedFromMean">A step that is not like the others (the preparation step), left out of the mean; −1 for none.</param>
+        public ProgressEstimate(RunTimings timings, IReadOnlyList<string> keys, int excludedFromMean = -1)
         {
             m_Timings = timings;
             m_Keys = keys;
+            m_ExcludedFromMean = excludedFromMean;
         }
 
         /// <summary>Step <paramref name="index"/> finished in <paramref name="seconds"/>.</summary>
         public void Finished(int index, double seconds)
         {
-            m_Finished++;
-            m_FinishedSeconds += seconds;
+            if (index != m_ExcludedFromMean)
+            {
+                m_Finished++;
+                m_FinishedSeconds += seconds;
+            }
             double? previous = m_Timings.Previous(m_Keys[index]);
             if (previous.HasValue)
             {
@@ -113,7 +128,7 @@ namespace SoftBodyDynamics.Runner
                 double? previous = m_Timings.Previous(m_Keys[k]);
                 if (previous.HasValue)
                     left += previous.Value * speed;
-                else if (mean.HasValue)
+                else if (mean.HasValue && k != m_ExcludedFromMean)
                     left += mean.Value;
                 else
                     return null;

@@ -79,6 +79,16 @@ namespace SoftBodyDynamics.Tests.Runner
             Assert.AreEqual(25.0, e.SecondsLeft(1).Value, 1e-9);
         }
 
+        [Test]
+        public void PreparationStep_IsLeftOutOfTheMeanOfUntimedSteps()
+        {
+            var e = new ProgressEstimate(RunTimings.Empty(), new[] { "prepare", "a", "b", "c" }, excludedFromMean: 0);
+            e.Finished(0, 100.0);
+            Assert.IsNull(e.SecondsLeft(1), "no ordinary step finished yet");
+            e.Finished(1, 2.0);
+            Assert.AreEqual(4.0, e.SecondsLeft(2).Value, 1e-12);
+        }
+
         [TestCase(0.0, "0:00")]
         [TestCase(59.4, "0:59")]
         [TestCase(61.0, "1:01")]
@@ -105,6 +115,26 @@ namespace SoftBodyDynamics.Tests.Runner
             t.Record(key, 1.25);
             t.Save(dir);
             Assert.AreEqual(1.25, RunTimings.Load(dir).Previous(key).Value, 1e-12);
+        }
+
+        [Test]
+        public void ReferenceTimings_FillWhatThePreviousRunDidNotTime_AndThePreviousRunWins()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "sbd-timings-" + Guid.NewGuid().ToString("N"));
+            string referenceDir = dir + "-reference";
+            Directory.CreateDirectory(dir);
+            Directory.CreateDirectory(referenceDir);
+            var reference = RunTimings.Empty();
+            reference.Record("both", 1.0);
+            reference.Record("reference only", 2.0);
+            reference.Save(referenceDir);
+            var previous = RunTimings.Empty();
+            previous.Record("both", 3.0);
+            previous.Save(dir);
+            RunTimings t = RunTimings.Load(dir, Path.Combine(referenceDir, RunTimings.FileName));
+            Assert.AreEqual(3.0, t.Previous("both").Value);
+            Assert.AreEqual(2.0, t.Previous("reference only").Value);
+            Assert.IsNull(t.Previous("neither"));
         }
 
         [Test]
