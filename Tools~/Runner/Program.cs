@@ -91,6 +91,7 @@ namespace SoftBodyDynamics.Runner
                 timings.Record(plan.Keys[index], seconds);
                 estimate.Finished(index, seconds);
                 index++;
+                Collect();
             }
             foreach (PlannedSuite planned in plan.Suites)
             {
@@ -118,6 +119,10 @@ namespace SoftBodyDynamics.Runner
                         report.Finished = index;
                         report.Write(timings);
                     }
+                // The suite's scenarios are done with: their bodies and buffers go before the next suite's timed steps.
+                foreach (PlannedScenario p in planned.Scenarios)
+                    p.Scenario = null;
+                Collect();
                 suiteResult.Finish(options.Scope, dir);
                 if (!string.IsNullOrEmpty(suiteResult.Summary))
                 {
@@ -209,6 +214,13 @@ namespace SoftBodyDynamics.Runner
             int[] order = Enumerable.Range(0, n).OrderByDescending(cost).ThenBy(k => k).ToArray();
             Parallel.ForEach(Partitioner.Create(order, EnumerablePartitionerOptions.NoBuffering),
                 new ParallelOptions { MaxDegreeOfParallelism = threads }, k => body(k));
+        }
+
+        /// <summary>A full, blocking collection between suites, so that no garbage of one suite is collected during the next one's timed steps.</summary>
+        static void Collect()
+        {
+            GC.Collect(GC.MaxGeneration, GCCollectionMode.Forced, blocking: true, compacting: true);
+            GC.WaitForPendingFinalizers();
         }
 
         static double Seconds(long t0) => (Stopwatch.GetTimestamp() - t0) / (double)Stopwatch.Frequency;
