@@ -15,12 +15,17 @@ namespace SoftBodyDynamics.Runner
         public const string FileName = "timings.csv";
         const string k_Header = "key,seconds";
 
-        readonly Dictionary<string, double> m_Previous;
+        /// <summary>The previous run's timings (saved again with this run's) and the reference run's (only read).</summary>
+        readonly Dictionary<string, double> m_Previous, m_Reference;
         readonly Dictionary<string, double> m_Current = new Dictionary<string, double>();
 
-        RunTimings(Dictionary<string, double> previous) { m_Previous = previous; }
+        RunTimings(Dictionary<string, double> previous, Dictionary<string, double> reference)
+        {
+            m_Previous = previous;
+            m_Reference = reference;
+        }
 
-        public static RunTimings Empty() => new RunTimings(new Dictionary<string, double>());
+        public static RunTimings Empty() => new RunTimings(new Dictionary<string, double>(), new Dictionary<string, double>());
 
         /// <summary>
         /// The timings of the previous run in <paramref name="dir"/>, over those of <paramref name="reference"/> (a file of the
@@ -29,10 +34,11 @@ namespace SoftBodyDynamics.Runner
         public static RunTimings Load(string dir, string reference = null)
         {
             var previous = new Dictionary<string, double>();
+            var referenceRun = new Dictionary<string, double>();
             if (reference != null)
-                Read(reference, previous);
+                Read(reference, referenceRun);
             Read(Path.Combine(dir, FileName), previous);
-            return new RunTimings(previous);
+            return new RunTimings(previous, referenceRun);
         }
 
         static void Read(string path, Dictionary<string, double> previous)
@@ -56,7 +62,8 @@ namespace SoftBodyDynamics.Runner
         public static string Key(string suite, string step) => suite + " | " + step;
 
         /// <summary>Seconds the previous run took for <paramref name="key"/>, or null.</summary>
-        public double? Previous(string key) => m_Previous.TryGetValue(key, out double s) ? s : (double?)null;
+        public double? Previous(string key) =>
+            m_Previous.TryGetValue(key, out double s) || m_Reference.TryGetValue(key, out s) ? s : (double?)null;
 
         public void Record(string key, double seconds) => m_Current[key] = seconds;
 

@@ -135,6 +135,9 @@ namespace SoftBodyDynamics.Tests.Runner
             Assert.AreEqual(3.0, t.Previous("both").Value);
             Assert.AreEqual(2.0, t.Previous("reference only").Value);
             Assert.IsNull(t.Previous("neither"));
+            // The reference run's timings are read, never written into the report folder's file.
+            t.Save(dir);
+            Assert.IsNull(RunTimings.Load(dir).Previous("reference only"));
         }
 
         [Test]
