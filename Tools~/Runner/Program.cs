@@ -228,8 +228,10 @@ namespace SoftBodyDynamics.Runner
         /// <summary>"[i/N] what — m:ss elapsed, about m:ss left".</summary>
         public static string Progress(int index, int count, string what, RunClock clock, ProgressEstimate estimate)
         {
-            double? left = estimate.SecondsLeft(index);
-            string tail = left.HasValue ? $"about {ProgressEstimate.Clock(left.Value)} left" : "time left known after the first step";
+            double? left = estimate.SecondsLeft(index, out int unknown);
+            string tail = !left.HasValue ? "time left known after the first step"
+                : unknown == 0 ? $"about {ProgressEstimate.Clock(left.Value)} left"
+                : $"about {ProgressEstimate.Clock(left.Value)} left for the steps timed before, and {unknown} never timed";
             return $"[{index + 1}/{count}] {what} — {ProgressEstimate.Clock(clock.Elapsed)} elapsed, {tail}";
         }
     }

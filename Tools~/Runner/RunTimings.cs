@@ -125,8 +125,16 @@ namespace SoftBodyDynamics.Runner
         }
 
         /// <summary>Seconds left before step <paramref name="index"/> starts (it and every later step); null when nothing is known yet.</summary>
-        public double? SecondsLeft(int index)
+        public double? SecondsLeft(int index) => SecondsLeft(index, out int unknown) is double s && unknown == 0 ? s : (double?)null;
+
+        /// <summary>
+        /// Seconds the steps from <paramref name="index"/> on take where known (null when none is), and how many of them are
+        /// <paramref name="unknown"/>: never timed, with no mean step of this run to count them at yet.
+        /// </summary>
+        public double? SecondsLeft(int index, out int unknown)
         {
+            unknown = 0;
+            bool any = false;
             double speed = m_FinishedPrevious > 0 ? m_FinishedWithPrevious / m_FinishedPrevious : 1.0;
             double? mean = m_Finished > 0 ? m_FinishedSeconds / m_Finished : (double?)null;
             double left = 0;
@@ -138,9 +146,13 @@ namespace SoftBodyDynamics.Runner
                 else if (mean.HasValue && k != m_ExcludedFromMean)
                     left += mean.Value;
                 else
-                    return null;
+                {
+                    unknown++;
+                    continue;
+                }
+                any = true;
             }
-            return left;
+            return any ? left : (double?)null;
         }
 
         /// <summary>m:ss (or h:mm:ss).</summary>

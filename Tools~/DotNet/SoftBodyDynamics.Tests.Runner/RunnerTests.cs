@@ -89,6 +89,20 @@ namespace SoftBodyDynamics.Tests.Runner
             Assert.AreEqual(4.0, e.SecondsLeft(2).Value, 1e-12);
         }
 
+        [Test]
+        public void StepsNeverTimed_BeforeAnyMean_AreCountedApart()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "sbd-estimate-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+            var previous = RunTimings.Empty();
+            previous.Record("b", 10.0);
+            previous.Save(dir);
+            var e = new ProgressEstimate(RunTimings.Load(dir), new[] { "new", "b", "also new" });
+            Assert.AreEqual(10.0, e.SecondsLeft(0, out int unknown).Value, 1e-12);
+            Assert.AreEqual(2, unknown);
+            Assert.IsNull(e.SecondsLeft(0), "the total is not known");
+        }
+
         [TestCase(0.0, "0:00")]
         [TestCase(59.4, "0:59")]
         [TestCase(61.0, "1:01")]
