@@ -32,12 +32,11 @@ namespace SoftBodyDynamics.Runner
             bool percent = rows[0].MetricUnit(metric) == MetricUnit.Fraction;
             double Shown(double v) => percent ? 100.0 * v : v;
             var figure = s.Suite as IScenarioSuiteFigure;
-            ScenarioOutcome Outcome(ScenarioResult r) => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep);
             // One series per method family (the text before the first comma, or the suite's own series), labelled by the rest.
             var families = figure != null
-                ? rows.GroupBy(r => figure.Series(Outcome(r))).ToList()
+                ? rows.GroupBy(r => figure.Series(r.Outcome())).ToList()
                 : rows.GroupBy(r => r.Method.Split(',')[0].Trim()).ToList();
-            double Cost(ScenarioResult r) => figure != null ? figure.Cost(Outcome(r)) : r.NsPerItem;
+            double Cost(ScenarioResult r) => figure != null ? figure.Cost(r.Outcome()) : r.NsPerItem;
             var dat = new StringBuilder();
             var plots = new List<string>();
             int index = 0;
@@ -46,13 +45,13 @@ namespace SoftBodyDynamics.Runner
                 // A suite with its own figure plots one point per label in a series (rows that ran the same setting, such
                 // as requested substep counts below what the step needs, would repeat it); the first row in suite order stays.
                 var ordered = (figure != null
-                    ? f.GroupBy(r => figure.PointLabel(Outcome(r))).Select(g => g.First())
+                    ? f.GroupBy(r => figure.PointLabel(r.Outcome())).Select(g => g.First())
                     : f).OrderBy(Cost).ToList();
                 for (int k = 0; k < ordered.Count; k++)
                 {
                     ScenarioResult r = ordered[k];
                     string rest = figure != null
-                        ? (k == 0 || k == ordered.Count - 1 ? figure.PointLabel(Outcome(r)) : "")
+                        ? (k == 0 || k == ordered.Count - 1 ? figure.PointLabel(r.Outcome()) : "")
                         : r.Method.Contains(',') ? r.Method.Substring(r.Method.IndexOf(',') + 1).Trim() + $" N={r.Size}" : $"N={r.Size}";
                     dat.AppendLine($"{F(Cost(r))} {F(Math.Max(LogFloor, Shown(r.MetricValue(metric))))} \"{rest.Replace("\"", "")}\"");
                 }
@@ -135,11 +134,11 @@ plot {string.Join(", ", plots)}
             return name + ".png";
         }
 
-        public static bool HasGnuplot()
-        {
-            string path = Environment.GetEnvironmentVariable("PATH") ?? "";
-            return path.Split(':').Any(d => File.Exists(Path.Combine(d, "gnuplot")));
-        }
+        /// <summary>True when gnuplot is on the PATH (looked up once: the report asks after every scenario).</summary>
+        public static bool HasGnuplot() => s_HasGnuplot.Value;
+
+        static readonly Lazy<bool> s_HasGnuplot = new Lazy<bool>(() =>
+            (Environment.GetEnvironmentVariable("PATH") ?? "").Split(':').Any(d => File.Exists(Path.Combine(d, "gnuplot"))));
 
         static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
     }

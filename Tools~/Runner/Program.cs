@@ -107,7 +107,7 @@ namespace SoftBodyDynamics.Runner
                 else
                     foreach (PlannedScenario p in planned.Scenarios)
                     {
-                        progress.WriteLine(Progress(index, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                        progress.WriteLine(Progress(index, plan.Count, What(planned, p), clock, estimate));
                         long t0 = Stopwatch.GetTimestamp();
                         ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
                         double seconds = Seconds(t0);
@@ -175,13 +175,12 @@ namespace SoftBodyDynamics.Runner
             RunTimings timings, ProgressEstimate estimate, RunClock clock, Report report, TextWriter progress)
         {
             int n = planned.Scenarios.Count;
-            double shared = 0;
             var results = new ScenarioResult[n];
             var own = new double[n];
             for (int k = 0; k < n; k++)
             {
                 PlannedScenario p = planned.Scenarios[k];
-                progress.WriteLine(Progress(index + k, plan.Count, $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})", clock, estimate));
+                progress.WriteLine(Progress(index + k, plan.Count, What(planned, p), clock, estimate));
                 long t1 = Stopwatch.GetTimestamp();
                 results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
                 own[k] = Seconds(t1);
@@ -190,7 +189,7 @@ namespace SoftBodyDynamics.Runner
             long t2 = Stopwatch.GetTimestamp();
             // An evaluation runs the scene's frames on the method's step, so the timed step is its cost's measure.
             ForEachLongestFirst(n, k => results[k].MedianMs, options.Threads, k => results[k].Metrics = planned.Scenarios[k].Scenario.Evaluate());
-            shared += Seconds(t2);
+            double shared = Seconds(t2);
             for (int k = 0; k < n; k++)
             {
                 suiteResult.Rows.Add(results[k]);
@@ -224,6 +223,9 @@ namespace SoftBodyDynamics.Runner
         }
 
         static double Seconds(long t0) => (Stopwatch.GetTimestamp() - t0) / (double)Stopwatch.Frequency;
+
+        /// <summary>"suite: method (size unit)", a scenario in a progress line.</summary>
+        static string What(PlannedSuite planned, PlannedScenario p) => $"{planned.Suite.Name}: {p.Scenario.Method} ({p.Size} {p.Scenario.SizeUnit})";
 
         /// <summary>"[i/N] what — m:ss elapsed, about m:ss left".</summary>
         public static string Progress(int index, int count, string what, RunClock clock, ProgressEstimate estimate)
@@ -282,8 +284,6 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Timing key of each step, in run order.</summary>
         public readonly List<string> Keys = new List<string>();
         public int Count => Keys.Count;
-
-        public static RunPlan Build(RunOptions options) => Build(options, ScenarioCatalog.Suites, ReportParts.All);
 
         public static RunPlan Build(RunOptions options, IEnumerable<IScenarioSuite> suites, IEnumerable<ReportPart> parts)
         {
@@ -349,8 +349,7 @@ namespace SoftBodyDynamics.Runner
         /// <summary>The suite's definition, asked for once (a scene's may compute its reference values).</summary>
         public SuiteDefinition Definition => m_Definition ??= Suite.Definition;
 
-        public IReadOnlyList<ScenarioOutcome> Outcomes() =>
-            Rows.ConvertAll(r => new ScenarioOutcome(r.Method, r.NsPerItem, r.Metrics, r.Size, r.ItemsPerStep));
+        public IReadOnlyList<ScenarioOutcome> Outcomes() => Rows.ConvertAll(r => r.Outcome());
 
         /// <summary>Runs the suite's summary and findings and draws its figures.</summary>
         public void Finish(RunScope scope, string dir)
@@ -390,6 +389,9 @@ namespace SoftBodyDynamics.Runner
         public IReadOnlyList<Metric> Metrics;
         public double NsPerItem => MedianMs * 1e6 / Math.Max(1, ItemsPerStep);
         public double ItemsPerSecond => ItemsPerStep / (MedianMs * 1e-3);
+
+        /// <summary>The row as a suite's summary, findings and figure see it.</summary>
+        public ScenarioOutcome Outcome() => new ScenarioOutcome(Method, NsPerItem, Metrics, Size, ItemsPerStep);
 
         /// <summary>The named metric, or NaN when this scenario does not report it.</summary>
         public double MetricValue(string name)

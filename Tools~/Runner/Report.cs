@@ -79,7 +79,7 @@ namespace SoftBodyDynamics.Runner
             md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread, every method JIT-optimised at its first call: no tiers, no dynamic PGO — not Burst; Burst numbers come from the Unity Performance tests)");
             md.AppendLine($"- Timing: median of {m_Options.Repeats} timed steps (fewer for scenarios whose step is a whole run{(m_Options.Scope == RunScope.Full ? "" : $", and as many as fit {RunOptions.DefaultTimedBudget:0} s, at least {ScenarioTimer.MinRepeats}, for long steps")}) after a warm-up of at least {ScenarioTimer.WarmupSeconds} s and 3 steps that goes on (up to {m_Options.MaxWarmup:0} s) while the fastest step still improves");
-            md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
+            md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study, its stability suite, the fluid accuracy suite) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");
             md.AppendLine();
 
@@ -113,7 +113,7 @@ namespace SoftBodyDynamics.Runner
             if (s.Rows.Count > 0)
             {
                 var metricNames = s.Rows.SelectMany(r => r.Metrics.Select(m => m.Name)).Distinct().ToList();
-                var units = metricNames.ToDictionary(n => n, n => s.Rows.Select(r => r.Metrics.FirstOrDefault(m => m.Name == n)).First(m => m.Name != null).Unit);
+                var units = metricNames.ToDictionary(n => n, n => s.Rows.First(r => r.Metrics.Any(m => m.Name == n)).MetricUnit(n));
                 md.AppendLine("| method | size | ms/step | ns/item | items/s | " + string.Join(" | ", metricNames.Select(n => Cell(n) + HeaderUnit(units[n]))) + " |");
                 md.AppendLine("|---|---:|---:|---:|---:|" + string.Concat(metricNames.Select(_ => "---:|")));
                 foreach (ScenarioResult r in s.Rows)

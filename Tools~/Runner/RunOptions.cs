@@ -39,8 +39,6 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Package root: the report parts run from it (default: the working directory).</summary>
         public string Root = ".";
 
-        public bool Quick => Scope == RunScope.Quick;
-
         /// <summary>
         /// Seconds of timed steps per scenario in the default run: a scenario whose step is long times as many as fit (at least
         /// <see cref="ScenarioTimer.MinRepeats"/>); the full run times <see cref="Repeats"/> whatever they cost.

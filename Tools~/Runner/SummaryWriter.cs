@@ -118,7 +118,7 @@ namespace SoftBodyDynamics.Runner
         /// <summary>An error as the summary prints it: fractions in percent, other units with their symbol.</summary>
         public static string Error(double value, MetricUnit unit) =>
             unit == MetricUnit.Fraction
-                ? (100 * value).ToString(value < 0.001 ? "0.000" : value < 0.1 ? "0.00" : "0.0", CultureInfo.InvariantCulture) + " %"
+                ? MethodStudyRanking.Percent(value)
                 : value.ToString("0.###", CultureInfo.InvariantCulture) + MetricUnits.Suffix(unit);
     }
 }

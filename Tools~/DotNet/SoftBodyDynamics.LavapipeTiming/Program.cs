@@ -13,7 +13,8 @@ using Unity.Mathematics;
 // time of its kernels on lavapipe (each dispatch submitted alone, so a few tens of µs of submit overhead are included)
 // and of the C# pass on one core, median of the repeats after a warm-up. Lavapipe runs the kernels on this machine's
 // CPU cores through LLVM: the ratio says how the kernels compare with the C# on the same CPU, not how fast a GPU is.
-//   dotnet run -c Release --project Tools~/DotNet/SoftBodyDynamics.LavapipeTiming [-- --quick] [--out FILE.md]
+//   dotnet run -c Release --project Tools~/DotNet/SoftBodyDynamics.LavapipeTiming [-- --quick | --full] [--out FILE.md]
+// (--full, which the main job passes in its full run, times what the default does: 22³ and 46³ cubes, five repeats.)
 static class Program
 {
     static int Main(string[] args)

@@ -109,7 +109,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// Explicit FEM diverges on this beam at 128 and 256 substeps, at ~8 s a point: the default run leaves it to --full and to the
         /// stability suite (its largest stable step against the explicit limit).
         /// </summary>
-        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.StandardKnobs;
+        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.Knobs;
 
         public override int StandardMaxResolution(MethodVariant variant) =>
             variant.Family.StartsWith("FEM", StringComparison.Ordinal) && variant.Family != "FEM co-rotational implicit" ? 1 : variant.StandardMaxResolution;

@@ -18,17 +18,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// knob value; empty = the scene's default resolution only.
         /// </summary>
         public readonly int[] Resolutions;
-        /// <summary>Knob values of the default run (<see cref="RunScope.Standard"/>); empty = the method is left out of it.</summary>
-        public readonly int[] StandardKnobs;
         /// <summary>Finest resolution of the default run (cells across); 0 = every resolution of <see cref="Resolutions"/>.</summary>
         public readonly int StandardMaxResolution;
         /// <summary>Builds a body of the setup with a knob value; the cell size (m) sizes shape matching's clusters.</summary>
         public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
 
         public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create,
-            int[] resolutions = null, int[] standardKnobs = null, int standardMaxResolution = 0)
+            int[] resolutions = null, int standardMaxResolution = 0)
         {
-            StandardKnobs = standardKnobs ?? knobs;
             StandardMaxResolution = standardMaxResolution;
             Family = family;
             KnobUnit = knobUnit;
@@ -37,9 +34,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Create = create;
             Resolutions = resolutions ?? new int[0];
         }
-
-        /// <summary>Knob values a run of <paramref name="scope"/> sweeps.</summary>
-        public int[] KnobsOf(RunScope scope) => scope == RunScope.Quick ? QuickKnobs : scope == RunScope.Standard ? StandardKnobs : Knobs;
 
         /// <summary>
         /// Resolutions a run of <paramref name="scope"/> sweeps, none finer than <paramref name="maxResolution"/> nor, in the default
