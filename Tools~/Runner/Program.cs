@@ -57,9 +57,10 @@ namespace SoftBodyDynamics.Runner
             {
                 // Everything untimed that the timed steps need, at once on the worker threads: the suites' shared references,
                 // then the setup of every scenario of the independent suites, each handed out longest first.
-                var work = new List<(Action Run, double Cost)>();
+                // A setup's cost is its own time in the previous (or reference) run, under its scenario's key + " | setup".
+                var work = new List<(Action Run, double Cost, string Key)>();
                 foreach (IScenarioSuite s in plan.Preparations)
-                    work.Add((((IScenarioSuitePreparation)s).Prepare, double.PositiveInfinity));
+                    work.Add((((IScenarioSuitePreparation)s).Prepare, double.PositiveInfinity, null));
                 int setups = 0;
                 for (int k = 0, key = 1; k < plan.Suites.Count; k++)
                 {
@@ -70,7 +71,8 @@ namespace SoftBodyDynamics.Runner
                         if (concurrent)
                         {
                             IScenario sc = p.Scenario;
-                            work.Add((sc.Setup, timings.Previous(plan.Keys[key]) ?? 0.0));
+                            string setupKey = SetupKey(plan.Keys[key]);
+                            work.Add((sc.Setup, timings.Previous(setupKey) ?? 0.0, setupKey));
                             setups++;
                         }
                         key++;
@@ -79,15 +81,21 @@ namespace SoftBodyDynamics.Runner
                 progress.WriteLine(Progress(index, plan.Count, $"preparing: the references of {plan.Preparations.Count} scenes and the setup of {setups} scenarios, on {options.Threads} threads", clock, estimate));
                 long t0 = Stopwatch.GetTimestamp();
                 int done = 0, tenth = Math.Max(1, work.Count / 10);
+                var own = new double[work.Count];
                 ForEachLongestFirst(work.Count, k => work[k].Cost, options.Threads, k =>
                 {
+                    long start = Stopwatch.GetTimestamp();
                     work[k].Run();
+                    own[k] = Seconds(start);
                     int d = System.Threading.Interlocked.Increment(ref done);
                     if (d % tenth == 0 || d == work.Count)
                         lock (progress)
                             progress.WriteLine($"      preparing: {d} of {work.Count} done — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");
                 });
                 double seconds = Seconds(t0);
+                for (int k = 0; k < work.Count; k++)
+                    if (work[k].Key != null)
+                        timings.Record(work[k].Key, own[k]);
                 timings.Record(plan.Keys[index], seconds);
                 estimate.Finished(index, seconds);
                 index++;
@@ -109,7 +117,7 @@ namespace SoftBodyDynamics.Runner
                     {
                         progress.WriteLine(Progress(index, plan.Count, What(planned, p), clock, estimate));
                         long t0 = Stopwatch.GetTimestamp();
-                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
+                        ScenarioResult r = ScenarioTimer.Run(p.Scenario, Repeats(p.Scenario, options), options.Timing);
                         double seconds = Seconds(t0);
                         suiteResult.Rows.Add(r);
                         table.PrintRow(r);
@@ -159,6 +167,9 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Timings of a reference run on the 2-core machine (Tools~/Runner), for the estimate of a first run.</summary>
         public const string ReferenceTimings = "reference-timings.csv";
 
+        /// <summary>The timings key of a scenario's setup when it runs in the preparation step (not a step of the plan: for scheduling only).</summary>
+        static string SetupKey(string scenarioKey) => scenarioKey + " | setup";
+
         static int Repeats(IScenario scenario, RunOptions options) =>
             scenario is IScenarioRepeatCap cap ? Math.Max(1, Math.Min(options.Repeats, cap.MaxRepeats)) : options.Repeats;
 
@@ -182,7 +193,7 @@ namespace SoftBodyDynamics.Runner
                 PlannedScenario p = planned.Scenarios[k];
                 progress.WriteLine(Progress(index + k, plan.Count, What(planned, p), clock, estimate));
                 long t1 = Stopwatch.GetTimestamp();
-                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.TimedBudget, options.MaxWarmup);
+                results[k] = ScenarioTimer.Time(p.Scenario, Repeats(p.Scenario, options), options.Timing);
                 own[k] = Seconds(t1);
             }
             progress.WriteLine($"      {planned.Suite.Name}: evaluating {n} scenarios on {options.Threads} threads — {ProgressEstimate.Clock(clock.Elapsed)} elapsed");

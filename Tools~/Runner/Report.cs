@@ -78,7 +78,10 @@ namespace SoftBodyDynamics.Runner
             md.AppendLine($"- Run: {RunOptions.ScopeName(m_Options.Scope)} (`bash Tools~/run.sh{ScopeFlag()}`), started {m_Started:yyyy-MM-dd HH:mm} UTC{(m_Options.Filter != null ? $", --filter {m_Options.Filter}" : "")}{(m_Options.Method != null ? $", --method \"{m_Options.Method}\"" : "")}");
             md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.ProcessArchitecture}, {CpuName()}");
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread, every method JIT-optimised at its first call: no tiers, no dynamic PGO — not Burst; Burst numbers come from the Unity Performance tests)");
-            md.AppendLine($"- Timing: median of {m_Options.Repeats} timed steps (fewer for scenarios whose step is a whole run{(m_Options.Scope == RunScope.Full ? "" : $", and as many as fit {RunOptions.DefaultTimedBudget:0} s, at least {ScenarioTimer.MinRepeats}, for long steps")}) after a warm-up of at least {ScenarioTimer.WarmupSeconds} s and 3 steps that goes on (up to {m_Options.MaxWarmup:0} s) while the fastest step still improves");
+            TimingRule t = m_Options.Timing;
+            md.AppendLine($"- Timing: median of {m_Options.Repeats} timed steps (fewer for scenarios whose step is a whole run" +
+                          (double.IsPositiveInfinity(t.TimedBudget) ? "" : $", and as many as fit {t.TimedBudget:0.#} s, at least {t.MinRepeats}, for long steps") +
+                          $") after a warm-up of at least {t.WarmupSeconds} s and {t.MinWarmupSteps} steps that goes on (up to {t.MaxWarmupSeconds} s) while the fastest step still improves");
             md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study, its stability suite, the fluid accuracy suite) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");
             md.AppendLine();

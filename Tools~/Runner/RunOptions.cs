@@ -39,17 +39,8 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Package root: the report parts run from it (default: the working directory).</summary>
         public string Root = ".";
 
-        /// <summary>
-        /// Seconds of timed steps per scenario in the default run: a scenario whose step is long times as many as fit (at least
-        /// <see cref="ScenarioTimer.MinRepeats"/>); the full run times <see cref="Repeats"/> whatever they cost.
-        /// </summary>
-        public double TimedBudget => Scope == RunScope.Full ? double.PositiveInfinity : DefaultTimedBudget;
-
-        /// <summary>Longest warm-up (s): the full run's, or the shorter one of the other runs.</summary>
-        public double MaxWarmup => Scope == RunScope.Full ? ScenarioTimer.MaxWarmupSeconds : ScenarioTimer.ShortMaxWarmupSeconds;
-
-        /// <summary>Seconds of timed steps per scenario outside the full run.</summary>
-        public const double DefaultTimedBudget = 3.0;
+        /// <summary>Warm-up and repeats: the full run's long rule, or the short one of the default and quick runs.</summary>
+        public TimingRule Timing => Scope == RunScope.Full ? TimingRule.Full : TimingRule.Short;
 
         /// <summary>The options, or null (with <paramref name="error"/>) when the command line is not understood.</summary>
         public static RunOptions Parse(string[] args, out string error)

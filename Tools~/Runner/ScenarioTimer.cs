@@ -4,42 +4,59 @@ using SoftBodyDynamics.Benchmarks.Scenarios;
 
 namespace SoftBodyDynamics.Runner
 {
+    /// <summary>
+    /// How a scenario is warmed up and how many steps are timed. Warm-up runs steps in rounds of at least
+    /// <see cref="RoundSeconds"/> until <see cref="WarmupSeconds"/> and <see cref="MinWarmupSteps"/> have passed and the
+    /// fastest step of a round is within 3 % of the round before's, or until <see cref="MaxWarmupSeconds"/>. The timed steps are
+    /// cut to what fits <see cref="TimedBudget"/> at the warm-up's fastest step, but never below <see cref="MinRepeats"/>.
+    /// </summary>
+    readonly struct TimingRule
+    {
+        public readonly double WarmupSeconds, RoundSeconds, MaxWarmupSeconds, TimedBudget;
+        public readonly int MinWarmupSteps, MinRepeats;
+
+        public TimingRule(double warmupSeconds, int minWarmupSteps, double roundSeconds, double maxWarmupSeconds, double timedBudget, int minRepeats)
+        {
+            WarmupSeconds = warmupSeconds;
+            MinWarmupSteps = minWarmupSteps;
+            RoundSeconds = roundSeconds;
+            MaxWarmupSeconds = maxWarmupSeconds;
+            TimedBudget = timedBudget;
+            MinRepeats = minRepeats;
+        }
+
+        /// <summary>The full run: long warm-ups and every repeat asked for, whatever they cost.</summary>
+        public static readonly TimingRule Full = new TimingRule(0.3, 3, 0.1, 3.0, double.PositiveInfinity, 1);
+
+        /// <summary>
+        /// The default and quick runs. The runner compiles every method optimised at its first call (no tiers), so a warm-up
+        /// only needs the first calls and warm caches: two steps and 50 ms, settled, at most 0.5 s; then as many timed steps as
+        /// fit 1 s, at least one.
+        /// </summary>
+        public static readonly TimingRule Short = new TimingRule(0.05, 2, 0.02, 0.5, 1.0, 1);
+    }
+
     /// <summary>Warm-up, then the median of repeated timed steps, and the bytes those steps allocated.</summary>
     static class ScenarioTimer
     {
-        /// <summary>Warm-up lasts at least this long (JIT tiering settles) and at least 3 steps.</summary>
-        public const double WarmupSeconds = 0.3;
-        /// <summary>Warm-up goes on in rounds of at least this long (s) while the fastest step of a round still improves.</summary>
-        const double k_RoundSeconds = 0.1;
         /// <summary>A round whose fastest step is within this fraction of the previous round's counts as settled.</summary>
         const double k_SettledFraction = 0.03;
-        /// <summary>Warm-up never lasts longer than this (s) in the full run.</summary>
-        public const double MaxWarmupSeconds = 3.0;
-        /// <summary>Warm-up never lasts longer than this (s) outside the full run: a step of a second or more has tiered up by its end.</summary>
-        public const double ShortMaxWarmupSeconds = 1.0;
 
         /// <summary>Setup, warm-up, the timed steps, then the evaluation: one scenario start to end.</summary>
-        public static ScenarioResult Run(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity, double maxWarmup = MaxWarmupSeconds)
+        public static ScenarioResult Run(IScenario scenario, int repeats, in TimingRule rule)
         {
             scenario.Setup();
-            ScenarioResult r = Time(scenario, repeats, timedBudget, maxWarmup);
+            ScenarioResult r = Time(scenario, repeats, rule);
             r.Metrics = scenario.Evaluate();
             return r;
         }
 
-        /// <summary>Fewest timed steps when a time budget cuts their number: the median of three.</summary>
-        public const int MinRepeats = 3;
-
-        /// <summary>
-        /// Warm-up and the timed steps of a scenario whose Setup has run; the result has no metrics yet. With a finite
-        /// <paramref name="timedBudget"/> (s), the timed steps are cut to what fits it at the warm-up's fastest step, but never
-        /// below <see cref="MinRepeats"/>.
-        /// </summary>
-        public static ScenarioResult Time(IScenario scenario, int repeats, double timedBudget = double.PositiveInfinity, double maxWarmup = MaxWarmupSeconds)
+        /// <summary>Warm-up and the timed steps (at most <paramref name="repeats"/>) of a scenario whose Setup has run; the result has no metrics yet.</summary>
+        public static ScenarioResult Time(IScenario scenario, int repeats, in TimingRule rule)
         {
-            double fastest = Warmup(scenario, maxWarmup);
-            if (fastest > 0 && timedBudget < double.PositiveInfinity)
-                repeats = Math.Max(Math.Min(repeats, MinRepeats), Math.Min(repeats, (int)(timedBudget / fastest)));
+            double fastest = Warmup(scenario, rule);
+            if (fastest > 0 && rule.TimedBudget < double.PositiveInfinity)
+                repeats = Math.Max(Math.Min(repeats, rule.MinRepeats), Math.Min(repeats, (int)(rule.TimedBudget / fastest)));
 
             var ms = new double[repeats];
             long allocated0 = GC.GetAllocatedBytesForCurrentThread();
@@ -68,14 +85,10 @@ namespace SoftBodyDynamics.Runner
         }
 
         /// <summary>
-        /// Returns the fastest step seen (s).
-        /// Runs steps in rounds of at least <see cref="k_RoundSeconds"/> until at least <see cref="WarmupSeconds"/>
-        /// and 3 steps have passed and the fastest step of the last round is no more than
-        /// <see cref="k_SettledFraction"/> faster than that of the round before: the JIT tiers a method up
-        /// (tier 0, instrumented, optimised) some time after its first calls, so the first scenario that runs new
-        /// code needs longer than the others. Stops after <paramref name="maxWarmup"/> seconds in any case.
+        /// Runs steps in rounds until the rule's warm-up has passed and the fastest step of the last round is no more than
+        /// <see cref="k_SettledFraction"/> faster than that of the round before; returns the fastest step seen (s).
         /// </summary>
-        static double Warmup(IScenario scenario, double maxWarmup)
+        static double Warmup(IScenario scenario, in TimingRule rule)
         {
             double fastest = double.PositiveInfinity;
             var total = Stopwatch.StartNew();
@@ -92,11 +105,11 @@ namespace SoftBodyDynamics.Runner
                     long t1 = Stopwatch.GetTimestamp();
                     best = Math.Min(best, (double)(t1 - t0) / Stopwatch.Frequency);
                     steps++;
-                } while ((double)(Stopwatch.GetTimestamp() - roundStart) / Stopwatch.Frequency < k_RoundSeconds);
+                } while ((double)(Stopwatch.GetTimestamp() - roundStart) / Stopwatch.Frequency < rule.RoundSeconds);
                 double elapsed = total.Elapsed.TotalSeconds;
                 fastest = Math.Min(fastest, best);
                 bool settled = best >= (1.0 - k_SettledFraction) * previousBest;
-                if (elapsed >= maxWarmup || (steps >= 3 && elapsed >= WarmupSeconds && settled))
+                if (elapsed >= rule.MaxWarmupSeconds || (steps >= rule.MinWarmupSteps && elapsed >= rule.WarmupSeconds && settled))
                     return fastest;
                 previousBest = best;
             }

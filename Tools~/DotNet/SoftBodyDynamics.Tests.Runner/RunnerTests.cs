@@ -446,20 +446,48 @@ namespace SoftBodyDynamics.Tests.Runner
             public IReadOnlyList<Metric> Evaluate() => new Metric[0];
         }
 
+        static TimingRule Budget(double seconds, int minRepeats) => new TimingRule(0.0, 1, 0.0, 0.0, seconds, minRepeats);
+
         [Test]
-        public void TimedBudget_CutsTheRepeatsOfLongSteps_ButNeverBelowThree()
+        public void TimedBudget_CutsTheRepeatsOfLongSteps_ButNeverBelowTheRulesFloor()
         {
             // Steps of at least 40 ms in a 0.2 s budget: at most 5 fit.
-            Assert.That(SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, 0.2).Repeats, Is.InRange(3, 5));
-            Assert.AreEqual(3, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, 0.01).Repeats);
+            Assert.That(SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, Budget(0.2, 3)).Repeats, Is.InRange(3, 5));
+            Assert.AreEqual(3, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, Budget(0.01, 3)).Repeats);
+            Assert.AreEqual(1, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 15, Budget(0.01, 1)).Repeats);
         }
 
         [Test]
         public void NoBudget_TimesEveryRepeatAskedFor() =>
-            Assert.AreEqual(7, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(1), 7).Repeats);
+            Assert.AreEqual(7, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(1), 7, TimingRule.Full).Repeats);
 
         [Test]
         public void FewerRepeatsAskedThanTheFloor_AreKept() =>
-            Assert.AreEqual(2, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 2, 0.01).Repeats);
+            Assert.AreEqual(2, SoftBodyDynamics.Runner.ScenarioTimer.Time(new SleepingScenario(40), 2, Budget(0.01, 3)).Repeats);
+
+        [Test]
+        public void ShortRule_WarmsUpAtLeastTwoSteps_AndFullAtLeastThree()
+        {
+            var s = new CountingScenario();
+            SoftBodyDynamics.Runner.ScenarioTimer.Time(s, 1, TimingRule.Short);
+            Assert.That(s.Steps, Is.GreaterThanOrEqualTo(2 + 1));
+            var f = new CountingScenario();
+            SoftBodyDynamics.Runner.ScenarioTimer.Time(f, 1, TimingRule.Full);
+            Assert.That(f.Steps, Is.GreaterThanOrEqualTo(3 + 1));
+        }
+
+        /// <summary>A scenario whose step takes 30 ms and counts its calls.</summary>
+        sealed class CountingScenario : IScenario
+        {
+            public int Steps;
+            public string Name => "Count";
+            public string Method => "count";
+            public int Size => 1;
+            public string SizeUnit => "steps";
+            public long ItemsPerStep => 1;
+            public void Setup() { }
+            public void Step() { Steps++; System.Threading.Thread.Sleep(30); }
+            public IReadOnlyList<Metric> Evaluate() => new Metric[0];
+        }
     }
 }

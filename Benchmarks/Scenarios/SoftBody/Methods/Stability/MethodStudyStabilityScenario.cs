@@ -54,8 +54,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         HardCaseResult[] m_Cases;
         int m_Frame;
 
-        public MethodStudyStabilityScenario(Func<StabilityCube> cube, MethodVariant variant)
+        readonly bool m_CheckBelow;
+
+        /// <param name="checkBelow">Also run dt_max/2 and dt_max/4 to see that stability is monotone (the full run).</param>
+        public MethodStudyStabilityScenario(Func<StabilityCube> cube, MethodVariant variant, bool checkBelow = true)
         {
+            m_CheckBelow = checkBelow;
             m_Cube = cube;
             m_Variant = variant;
         }
@@ -77,7 +81,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             StabilityCube cube = m_CubeInUse = m_Cube();
             m_Body = m_Variant.Create(cube.Pinned, StepKnob, cube.CellSize);
-            m_Step = StableStepSearch.Find(cube, m_Body);
+            m_Step = StableStepSearch.Find(cube, m_Body, m_CheckBelow);
             m_Cases = new HardCaseResult[HardCases.All.Length];
             IMethodBody free = m_Variant.Create(cube.Free, m_Variant.Knobs[0], cube.CellSize);
             for (int c = 0; c < m_Cases.Length; c++)
@@ -101,8 +105,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 new Metric(Capped, m_Step.Capped ? 1 : 0, MetricUnit.Flag),
                 new Metric(Bound, 1e3 * bound, MetricUnit.Millisecond),
                 new Metric(Ratio, m_Step.MaxStep / bound, MetricUnit.Dimensionless),
-                new Metric(Monotone, m_Step.Monotone ? 1 : 0, MetricUnit.Flag),
-                new Metric(BoundedBelow, m_Step.BoundedBelow ? 1 : 0, MetricUnit.Flag),
+                new Metric(Monotone, !m_Step.BelowChecked ? double.NaN : m_Step.Monotone ? 1 : 0, MetricUnit.Flag),
+                new Metric(BoundedBelow, !m_Step.BelowChecked ? double.NaN : m_Step.BoundedBelow ? 1 : 0, MetricUnit.Flag),
                 new Metric(BoundedAbove, 1e3 * m_Step.BoundedAbove, MetricUnit.Millisecond),
                 new Metric(FailureReason, (int)m_Step.FailureAbove, MetricUnit.Code),
                 new Metric(Runs, m_Step.Runs, MetricUnit.Count),
