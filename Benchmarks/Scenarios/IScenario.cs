@@ -50,6 +50,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     }
 
     /// <summary>
+    /// A scenario whose step is a whole run of many frames: the default and quick runs warm it up with a few frames of the same
+    /// run (the first frame compiles the step and the rest fill the caches) instead of whole steps, as a long run amortises
+    /// what is left of that cost over its frames.
+    /// </summary>
+    public interface IScenarioShortWarmup
+    {
+        /// <summary>Runs the first few frames of the step's run; the next <see cref="IScenario.Step"/> starts the run again from its initial state.</summary>
+        void WarmupFrames();
+    }
+
+    /// <summary>
     /// A suite whose scenarios share no mutable state: the Setup and Evaluate of different scenarios may run at the same time
     /// on worker threads (each is single-threaded and gives the same bits either way). The runner still times their steps
     /// one at a time, with nothing else running.

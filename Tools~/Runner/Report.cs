@@ -80,8 +80,9 @@ namespace SoftBodyDynamics.Runner
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription} (managed C#, single thread, every method JIT-optimised at its first call: no tiers, no dynamic PGO — not Burst; Burst numbers come from the Unity Performance tests)");
             TimingRule t = m_Options.Timing;
             md.AppendLine($"- Timing: median of {m_Options.Repeats} timed steps (fewer for scenarios whose step is a whole run" +
-                          (double.IsPositiveInfinity(t.TimedBudget) ? "" : $", and as many as fit {t.TimedBudget:0.#} s, at least {t.MinRepeats}, for long steps") +
-                          $") after a warm-up of at least {t.WarmupSeconds} s and {t.MinWarmupSteps} steps that goes on (up to {t.MaxWarmupSeconds} s) while the fastest step still improves");
+                          (double.IsPositiveInfinity(t.TimedBudget) ? "" : $", and no more once they have taken {t.TimedBudget:0.#} s, at least {t.MinRepeats}") +
+                          $") after a warm-up of at least {t.WarmupSeconds} s and {t.MinWarmupSteps} steps that goes on (up to {t.MaxWarmupSeconds} s) while the fastest step still improves" +
+                          (t.ShortWarmups ? "; a step that is a whole run (dam break, droplet) is warmed up by the run's first few frames" : ""));
             md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study, its stability suite, the fluid accuracy suite) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");
             md.AppendLine();

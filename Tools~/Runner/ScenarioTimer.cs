@@ -7,16 +7,21 @@ namespace SoftBodyDynamics.Runner
     /// <summary>
     /// How a scenario is warmed up and how many steps are timed. Warm-up runs steps in rounds of at least
     /// <see cref="RoundSeconds"/> until <see cref="WarmupSeconds"/> and <see cref="MinWarmupSteps"/> have passed and the
-    /// fastest step of a round is within 3 % of the round before's, or until <see cref="MaxWarmupSeconds"/>. The timed steps are
-    /// cut to what fits <see cref="TimedBudget"/> at the warm-up's fastest step, but never below <see cref="MinRepeats"/>.
+    /// fastest step of a round is within 3 % of the round before's, or until <see cref="MaxWarmupSeconds"/>; with
+    /// <see cref="ShortWarmups"/>, a scenario whose step is a whole run (<see cref="IScenarioShortWarmup"/>) is warmed up by a
+    /// few frames of that run instead. The timed steps stop once they have taken <see cref="TimedBudget"/>, but never before
+    /// <see cref="MinRepeats"/>.
     /// </summary>
     readonly struct TimingRule
     {
         public readonly double WarmupSeconds, RoundSeconds, MaxWarmupSeconds, TimedBudget;
         public readonly int MinWarmupSteps, MinRepeats;
+        public readonly bool ShortWarmups;
 
-        public TimingRule(double warmupSeconds, int minWarmupSteps, double roundSeconds, double maxWarmupSeconds, double timedBudget, int minRepeats)
+        public TimingRule(double warmupSeconds, int minWarmupSteps, double roundSeconds, double maxWarmupSeconds, double timedBudget, int minRepeats,
+            bool shortWarmups)
         {
+            ShortWarmups = shortWarmups;
             WarmupSeconds = warmupSeconds;
             MinWarmupSteps = minWarmupSteps;
             RoundSeconds = roundSeconds;
@@ -26,14 +31,14 @@ namespace SoftBodyDynamics.Runner
         }
 
         /// <summary>The full run: long warm-ups and every repeat asked for, whatever they cost.</summary>
-        public static readonly TimingRule Full = new TimingRule(0.3, 3, 0.1, 3.0, double.PositiveInfinity, 1);
+        public static readonly TimingRule Full = new TimingRule(0.3, 3, 0.1, 3.0, double.PositiveInfinity, 1, false);
 
         /// <summary>
         /// The default and quick runs. The runner compiles every method optimised at its first call (no tiers), so a warm-up
-        /// only needs the first calls and warm caches: two steps and 50 ms, settled, at most 0.5 s; then as many timed steps as
-        /// fit 1 s, at least one.
+        /// only needs the first calls and warm caches: two steps and 50 ms, settled, at most 0.5 s (a few frames for a step that is
+        /// a whole run); then timed steps until they have taken 0.5 s, at least one.
         /// </summary>
-        public static readonly TimingRule Short = new TimingRule(0.05, 2, 0.02, 0.5, 1.0, 1);
+        public static readonly TimingRule Short = new TimingRule(0.05, 2, 0.02, 0.5, 0.5, 1, true);
     }
 
     /// <summary>Warm-up, then the median of repeated timed steps, and the bytes those steps allocated.</summary>
@@ -54,19 +59,26 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Warm-up and the timed steps (at most <paramref name="repeats"/>) of a scenario whose Setup has run; the result has no metrics yet.</summary>
         public static ScenarioResult Time(IScenario scenario, int repeats, in TimingRule rule)
         {
-            double fastest = Warmup(scenario, rule);
-            if (fastest > 0 && rule.TimedBudget < double.PositiveInfinity)
-                repeats = Math.Max(Math.Min(repeats, rule.MinRepeats), Math.Min(repeats, (int)(rule.TimedBudget / fastest)));
+            if (rule.ShortWarmups && scenario is IScenarioShortWarmup shortWarmup)
+                shortWarmup.WarmupFrames();
+            else
+                Warmup(scenario, rule);
 
             var ms = new double[repeats];
+            int minRepeats = Math.Min(repeats, rule.MinRepeats);
+            double budgetMs = rule.TimedBudget * 1000.0, spentMs = 0;
             long allocated0 = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < repeats; i++)
+            int done = 0;
+            while (done < repeats && (done < minRepeats || spentMs < budgetMs))
             {
                 long t0 = Stopwatch.GetTimestamp();
                 scenario.Step();
-                ms[i] = (Stopwatch.GetTimestamp() - t0) * 1000.0 / Stopwatch.Frequency;
+                ms[done] = (Stopwatch.GetTimestamp() - t0) * 1000.0 / Stopwatch.Frequency;
+                spentMs += ms[done++];
             }
             long allocated = GC.GetAllocatedBytesForCurrentThread() - allocated0;
+            repeats = done;
+            Array.Resize(ref ms, done);
             Array.Sort(ms);
             double median = repeats % 2 == 1 ? ms[repeats / 2] : 0.5 * (ms[repeats / 2 - 1] + ms[repeats / 2]);
             return new ScenarioResult
@@ -86,11 +98,10 @@ namespace SoftBodyDynamics.Runner
 
         /// <summary>
         /// Runs steps in rounds until the rule's warm-up has passed and the fastest step of the last round is no more than
-        /// <see cref="k_SettledFraction"/> faster than that of the round before; returns the fastest step seen (s).
+        /// <see cref="k_SettledFraction"/> faster than that of the round before.
         /// </summary>
-        static double Warmup(IScenario scenario, in TimingRule rule)
+        static void Warmup(IScenario scenario, in TimingRule rule)
         {
-            double fastest = double.PositiveInfinity;
             var total = Stopwatch.StartNew();
             int steps = 0;
             double previousBest = double.PositiveInfinity;
@@ -107,10 +118,9 @@ namespace SoftBodyDynamics.Runner
                     steps++;
                 } while ((double)(Stopwatch.GetTimestamp() - roundStart) / Stopwatch.Frequency < rule.RoundSeconds);
                 double elapsed = total.Elapsed.TotalSeconds;
-                fastest = Math.Min(fastest, best);
                 bool settled = best >= (1.0 - k_SettledFraction) * previousBest;
                 if (elapsed >= rule.MaxWarmupSeconds || (steps >= rule.MinWarmupSteps && elapsed >= rule.WarmupSeconds && settled))
-                    return fastest;
+                    return;
                 previousBest = best;
             }
         }

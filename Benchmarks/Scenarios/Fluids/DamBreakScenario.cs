@@ -13,7 +13,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// (<see cref="FluidScene.BulkFront"/>, particles with ≥ 4 neighbours), sampled every frame and interpolated at the
     /// table's times.
     /// </summary>
-    public sealed class DamBreakScenario : IScenario, IScenarioRepeatCap
+    public sealed class DamBreakScenario : IScenario, IScenarioRepeatCap, IScenarioShortWarmup
     {
         /// <summary>Frame length (s) of the run: the front is sampled at this interval (ΔT ≈ 0.037).</summary>
         public const float FrameSeconds = 1f / 500f;
@@ -84,7 +84,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             b.Status = new FluidStatus { Count = m_InitialCount, NextId = m_InitialCount, Spawned = m_InitialCount };
         }
 
-        public void Step()
+        /// <summary>Frames of the short warm-up.</summary>
+        const int k_WarmupFrames = 10;
+
+        public void Step() => Run(int.MaxValue);
+
+        public void WarmupFrames() => Run(k_WarmupFrames);
+
+        /// <summary>The run from release, ended at T = <see cref="EndT"/> or after <paramref name="maxFrames"/> frames.</summary>
+        void Run(int maxFrames)
         {
             Reset();
             FluidBuffers b = m_Buffers;
@@ -98,7 +106,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_SampleT[m_Samples] = 0;
             m_SampleZ[m_Samples++] = 1;
             double t = 0;
-            while (MartinMoyce1952.DimensionlessTime(t) < EndT && m_Samples < m_SampleT.Length)
+            while (MartinMoyce1952.DimensionlessTime(t) < EndT && m_Samples < m_SampleT.Length && m_Samples <= maxFrames)
             {
                 FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, FrameSeconds, b.Particles, b.Scratch, ref b.Status);
                 t += FrameSeconds;

@@ -15,7 +15,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// volume (0.26 for the cube, negative when cohesion squeezes the drop below its rest volume). One Step is the whole
     /// run in 1/60 s frames; an item is one particle-substep.
     /// </summary>
-    public sealed class DropletScenario : IScenario, IScenarioRepeatCap
+    public sealed class DropletScenario : IScenario, IScenarioRepeatCap, IScenarioShortWarmup
     {
         const float k_Spacing = 0.01f;
         const int k_Side = 10;
@@ -70,7 +70,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         int Frames => (int)Math.Round(m_Seconds / k_Frame);
 
-        public void Step()
+        /// <summary>Frames of the short warm-up.</summary>
+        const int k_WarmupFrames = 5;
+
+        public void Step() => Run(Frames);
+
+        public void WarmupFrames() => Run(Math.Min(k_WarmupFrames, Frames));
+
+        /// <summary>The run from the cube: <paramref name="frames"/> frames, then the end-state measures.</summary>
+        void Run(int frames)
         {
             FluidBuffers b = m_Buffers;
             Array.Copy(m_Initial, b.Positions, Size);
@@ -83,7 +91,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Items = 0;
             m_TimeToRound = double.NaN;
             m_Sphericity[0] = Sphericity(b, k_Spacing);
-            for (int f = 1; f <= Frames; f++)
+            for (int f = 1; f <= frames; f++)
             {
                 FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
                 m_Items += (long)r.Substeps * r.Count;

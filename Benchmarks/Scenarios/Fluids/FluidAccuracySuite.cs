@@ -24,7 +24,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static readonly float[] SoundMultiples = { 5f, 10f, 20f };
         /// <summary>Position-based iteration counts.</summary>
         public static readonly int[] Iterations = { 2, 4, 8 };
-        /// <summary>Position-based iteration counts of the hydrostatic rows: the default, and enough for the 16-layer column to come to rest at one substep per 1/60 s frame.</summary>
+        /// <summary>Position-based iteration counts of the hydrostatic rows (full run): the default, and enough for the 16-layer column to come to rest at one substep per 1/60 s frame.</summary>
         public static readonly int[] HydrostaticIterations = { 4, 16 };
         /// <summary>Finest dam-break resolution of the default run, where only the cheapest setting of each solver runs (a run there takes 5–25 s).</summary>
         public const int StandardFinestResolution = 20;
@@ -64,6 +64,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
                 $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, " +
+                $"the WCSPH column only (the position-based columns take 30 s of settling here), " +
                 $"droplets without cohesion, with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
                 "Quick run: a/10 with one setting per solver, the WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
@@ -88,7 +89,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             float settle = quick ? 0.5f : SettleSeconds;
             yield return new HydrostaticColumnScenario(Weak(10f * HydrostaticColumnScenario.ReferenceSpeed), "c0 = 10·v", settle);
-            if (!quick)
+            if (scope == RunScope.Full)
                 foreach (int iterations in HydrostaticIterations)
                     yield return new HydrostaticColumnScenario(PositionBased(iterations), $"{iterations} it", settle);
             foreach (var (parameters, setting) in Droplets(scope))

@@ -446,7 +446,7 @@ namespace SoftBodyDynamics.Tests.Runner
             public IReadOnlyList<Metric> Evaluate() => new Metric[0];
         }
 
-        static TimingRule Budget(double seconds, int minRepeats) => new TimingRule(0.0, 1, 0.0, 0.0, seconds, minRepeats);
+        static TimingRule Budget(double seconds, int minRepeats) => new TimingRule(0.0, 1, 0.0, 0.0, seconds, minRepeats, true);
 
         [Test]
         public void TimedBudget_CutsTheRepeatsOfLongSteps_ButNeverBelowTheRulesFloor()
@@ -474,6 +474,41 @@ namespace SoftBodyDynamics.Tests.Runner
             var f = new CountingScenario();
             SoftBodyDynamics.Runner.ScenarioTimer.Time(f, 1, TimingRule.Full);
             Assert.That(f.Steps, Is.GreaterThanOrEqualTo(3 + 1));
+        }
+
+        [Test]
+        public void ShortRule_WarmsUpAWholeRunStepByItsFirstFrames_AndFullByWholeSteps()
+        {
+            var s = new WholeRunScenario();
+            SoftBodyDynamics.Runner.ScenarioTimer.Time(s, 1, TimingRule.Short);
+            Assert.AreEqual((1, 1), (s.WarmupCalls, s.Steps));
+            var f = new WholeRunScenario();
+            SoftBodyDynamics.Runner.ScenarioTimer.Time(f, 1, TimingRule.Full);
+            Assert.AreEqual(0, f.WarmupCalls);
+            Assert.That(f.Steps, Is.GreaterThanOrEqualTo(3 + 1));
+        }
+
+        [Test]
+        public void TimedSteps_StopOnceTheyHaveTakenTheBudget()
+        {
+            // 30 ms steps, 0.1 s budget: the fourth step ends past it (3 × 30 ms < 100 ms ≤ 4 × 30 ms, give or take the sleep's overrun).
+            int repeats = SoftBodyDynamics.Runner.ScenarioTimer.Time(new CountingScenario(), 15, Budget(0.1, 1)).Repeats;
+            Assert.That(repeats, Is.InRange(3, 4));
+        }
+
+        /// <summary>A whole-run scenario that counts its short warm-ups and its steps.</summary>
+        sealed class WholeRunScenario : IScenario, IScenarioShortWarmup
+        {
+            public int Steps, WarmupCalls;
+            public string Name => "Run";
+            public string Method => "run";
+            public int Size => 1;
+            public string SizeUnit => "runs";
+            public long ItemsPerStep => 1;
+            public void Setup() { }
+            public void Step() { Steps++; System.Threading.Thread.Sleep(30); }
+            public void WarmupFrames() => WarmupCalls++;
+            public IReadOnlyList<Metric> Evaluate() => new Metric[0];
         }
 
         /// <summary>A scenario whose step takes 30 ms and counts its calls.</summary>

@@ -94,6 +94,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Notes = new[]
             {
                 $"'{FrequencyMeasured}' = 0: the free run did not oscillate through two upward crossings (implicit Euler's numerical damping), so '{Error}' is the worse static error.",
+                "A reset ends the run it happens in: its value is NaN.",
             },
             Details = "choosing-a-method.md#cantilever-methodstudycantilever",
         };
@@ -143,7 +144,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             };
         }
 
-        /// <summary>Downward static tip deflection (m) under <paramref name="load"/> g, the mean of the last <paramref name="average"/> frames; NaN when the body diverged or was reset.</summary>
+        /// <summary>Downward static tip deflection (m) under <paramref name="load"/> g, the mean of the last <paramref name="average"/> frames; NaN when the body diverged or was reset (a reset ends the run).</summary>
         static double StaticTip(IMethodBody body, bool[] tipFace, float load, int average, out int resets)
         {
             body.Place();
@@ -151,7 +152,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var g = new float3(0f, -9.81f * load, 0f);
             int frames = (int)Math.Round(StaticTime / Dt);
             double sum = 0;
-            for (int k = 0; k < frames; k++)
+            for (int k = 0; k < frames && body.Resets == 0; k++)
             {
                 body.Step(Dt, g, ReadOnlySpan<ColliderShape>.Empty);
                 if (k >= frames - average)
@@ -161,7 +162,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return resets == 0 && Finite(body) ? sum / average : double.NaN;
         }
 
-        /// <summary>First frequency (Hz): upward zero crossings of the tip's y about the mid-range of its oscillation under the small load.</summary>
+        /// <summary>First frequency (Hz): upward zero crossings of the tip's y about the mid-range of its oscillation under the small load; NaN after a reset (which ends the run).</summary>
         static double FirstFrequency(IMethodBody body, bool[] tipFace, out int resets)
         {
             body.Place();
@@ -169,7 +170,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             int frames = (int)Math.Round(OscillationTime / Dt);
             var y = new double[frames + 1];
             y[0] = Mean(body, tipFace).y;
-            for (int k = 1; k <= frames; k++)
+            for (int k = 1; k <= frames && body.Resets == 0; k++)
             {
                 body.Step(Dt, g, ReadOnlySpan<ColliderShape>.Empty);
                 y[k] = Mean(body, tipFace).y;

@@ -116,6 +116,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     {
                         $"'{SidewaysValue}': the tip's largest sideways (z) excursion. The continuum stays planar, but a tetrahedral mesh that is not mirror-symmetric " +
                         "in z couples y and z bending, and the swing can beat into z (its y cycles then come out longer and smaller).",
+                        "A reset ends the run: every value is then NaN.",
                     },
                     Details = "choosing-a-method.md#the-csm3-beam-in-3-d-methodstudycsm3",
                 };
@@ -163,7 +164,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>
         /// Releases the body from rest and returns the tip's u_y mean (m), amplitude (m) and frequency (Hz) by
         /// <see cref="OscillationStatistics"/> (NaN frequency and whole-record extremes when no cycle completes), and its
-        /// largest |u_z| (m) and its resets; NaN mean when the body is not finite at the end.
+        /// largest |u_z| (m) and its resets; NaN mean when the body is not finite at the end or was reset (a reset ends the run).
         /// </summary>
         public static (double Mean, double Amplitude, double Frequency, double Sideways, int Resets) Swing(IMethodBody body, bool[] tipFace)
         {
@@ -172,7 +173,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var g = new float3(0f, -Gravity, 0f);
             var uy = new double[Frames + 1];
             double sideways = 0;
-            for (int k = 1; k <= Frames; k++)
+            for (int k = 1; k <= Frames && body.Resets == 0; k++)
             {
                 body.Step(Dt, g, ReadOnlySpan<ColliderShape>.Empty);
                 (double y, double z) = Tip(body, tipFace);
@@ -180,7 +181,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 sideways = Math.Max(sideways, Math.Abs(z - z0));
             }
             int resets = body.Resets;
-            if (!Finite(body))
+            if (resets > 0 || !Finite(body))
                 return (double.NaN, double.NaN, double.NaN, double.NaN, resets);
             (double mean, double amplitude, double frequency) = OscillationStatistics.Measure(uy, Dt);
             if (double.IsNaN(mean))

@@ -38,13 +38,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>
         /// Resolutions a run of <paramref name="scope"/> sweeps, none finer than <paramref name="maxResolution"/> nor, in the default
         /// run, <paramref name="standardMaxResolution"/> (0 = no cap); {0} (the scene's default) when the variant sweeps none or the run is quick.
+        /// The default run thins a sweep of more than three resolutions to every other one from the coarsest, and the finest.
         /// </summary>
         public int[] ResolutionsOf(RunScope scope, int maxResolution, int standardMaxResolution)
         {
             if (Resolutions.Length == 0 || scope == RunScope.Quick)
                 return new[] { 0 };
             int cap = scope == RunScope.Standard && standardMaxResolution > 0 ? Math.Min(maxResolution, standardMaxResolution) : maxResolution;
-            return Array.FindAll(Resolutions, n => n <= cap);
+            int[] swept = Array.FindAll(Resolutions, n => n <= cap);
+            if (scope != RunScope.Standard || swept.Length <= 3)
+                return swept;
+            int last = swept.Length - 1;
+            return Array.FindAll(swept, n => Array.IndexOf(swept, n) % 2 == 0 || Array.IndexOf(swept, n) == last);
         }
 
         /// <summary>"family; knob unit", the scenario's method text (the figure splits it at the semicolon before the knob).</summary>
