@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
@@ -77,6 +78,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     {
         /// <summary>Does the shared work once; thread-safe, and cheap when done already.</summary>
         void Prepare();
+    }
+
+    /// <summary>
+    /// A suite whose prepared work is a set of reference values that depend on its sources only: the runner may hand it the
+    /// values an earlier run computed from the same sources (<see cref="UseReference"/>) in place of computing them again.
+    /// </summary>
+    public interface IScenarioSuiteStoredReference : IScenarioSuitePreparation
+    {
+        /// <summary>Type of the reference values: public fields of numbers, and arrays and structs of them.</summary>
+        Type ReferenceType { get; }
+
+        /// <summary>The reference values, computed on the first call.</summary>
+        object Reference();
+
+        /// <summary>Takes stored values of <see cref="ReferenceType"/> as the reference; <see cref="IScenarioSuitePreparation.Prepare"/> then has nothing left to do.</summary>
+        void UseReference(object values);
     }
 
     /// <summary>Groups of scenarios the runner knows, with the figure each group plots.</summary>

@@ -53,6 +53,22 @@ namespace SoftBodyDynamics.Runner
             progress.WriteLine($"Main job ({RunOptions.ScopeName(options.Scope)} run): {plan.Suites.Count} suites, {plan.Count} steps; report in {dir}");
 
             int index = 0;
+            string root = Path.GetFullPath(options.Root);
+            List<IScenarioSuiteStoredReference> storable = plan.Preparations.OfType<IScenarioSuiteStoredReference>().ToList();
+            string storedPath = Path.Combine(root, "Tools~", "Runner", ReferenceStore.FileName);
+            string sourceHash = storable.Count > 0 ? ReferenceStore.SourceHash(root) : null;
+            bool computeReferences = storable.Count > 0 && options.Scope == RunScope.Full;
+            if (storable.Count > 0 && options.Scope != RunScope.Full)
+            {
+                List<string> used = ReferenceStore.Use(storedPath, sourceHash, storable, out string why);
+                computeReferences = used.Count < storable.Count;
+                report.ReferenceNote = used.Count > 0
+                    ? $"the float64 reference values of {string.Join(", ", used)} are the stored ones (`Tools~/Runner/{ReferenceStore.FileName}`, " +
+                      $"computed by a full run from the same reference sources, SHA-256 {sourceHash.Substring(0, 12)}…); `--full` computes them again and compares"
+                    : $"computed by this run ({why})";
+                if (computeReferences)
+                    progress.WriteLine($"      references: {why}, so this run computes them and writes {ReferenceStore.FileName} to its report folder (to store in Tools~/Runner)");
+            }
             if (plan.HasPreparation)
             {
                 // Everything untimed that the timed steps need, at once on the worker threads: the suites' shared references,
@@ -99,6 +115,8 @@ namespace SoftBodyDynamics.Runner
                 timings.Record(plan.Keys[index], seconds);
                 estimate.Finished(index, seconds);
                 index++;
+                if (computeReferences)
+                    report.ReferenceNote = WriteReferences(dir, storedPath, sourceHash, storable);
                 Collect();
             }
             foreach (PlannedSuite planned in plan.Suites)
@@ -162,6 +180,22 @@ namespace SoftBodyDynamics.Runner
             output.WriteLine($"Report written to {path}");
             progress.WriteLine($"Main job done in {ProgressEstimate.Clock(clock.Elapsed)} ({RunOptions.ScopeName(options.Scope)} run).");
             return report.Parts.Any(p => !p.Succeeded) ? 1 : 0;
+        }
+
+        /// <summary>
+        /// Writes the references a run computed (a full run always computes them) to its report folder and says how they
+        /// compare with the stored ones.
+        /// </summary>
+        static string WriteReferences(string dir, string storedPath, string sourceHash, List<IScenarioSuiteStoredReference> storable)
+        {
+            string written = Path.Combine(dir, ReferenceStore.FileName);
+            ReferenceStore.Write(written, sourceHash, storable, $"full run, {DateTime.UtcNow:yyyy-MM-dd}");
+            List<string> differ = ReferenceStore.Differences(storedPath, written);
+            string stored = $"`Tools~/Runner/{ReferenceStore.FileName}`";
+            string tail = differ == null ? $"none are stored for these sources: copy it to {stored} for the default run to use"
+                : differ.Count == 0 ? $"they equal the stored values in {stored}"
+                : $"they differ from the stored values of {string.Join(", ", differ)}: copy it to {stored}";
+            return $"computed by this run and written to {ReferenceStore.FileName}; {tail}";
         }
 
         /// <summary>Timings of a reference run on the 2-core machine (Tools~/Runner), for the estimate of a first run.</summary>

@@ -25,6 +25,8 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Steps finished so far.</summary>
         public int Finished;
         public bool Complete;
+        /// <summary>Where the float64 references of the run come from (<see cref="ReferenceStore"/>); null when it has none.</summary>
+        public string ReferenceNote;
 
         public Report(RunOptions options, string dir, int planned)
         {
@@ -84,6 +86,8 @@ namespace SoftBodyDynamics.Runner
                           $") after a warm-up of at least {t.WarmupSeconds} s and {t.MinWarmupSteps} steps that goes on (up to {t.MaxWarmupSeconds} s) while the fastest step still improves" +
                           (t.ShortWarmups ? "; a step that is a whole run (dam break, droplet) is warmed up by the run's first few frames" : ""));
             md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study, its stability suite, the fluid accuracy suite) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
+            if (ReferenceNote != null)
+                md.AppendLine($"- References: {ReferenceNote}");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");
             md.AppendLine();
 

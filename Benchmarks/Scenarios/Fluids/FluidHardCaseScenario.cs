@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// neighbour-overflow particle-substeps, the largest density ratio, substeps wanted against run). An item is one
     /// particle-substep.
     /// </summary>
-    public sealed class FluidHardCaseScenario : IScenario, IScenarioRepeatCap
+    public sealed class FluidHardCaseScenario : IScenario, IScenarioRepeatCap, IScenarioShortWarmup
     {
         const float k_Spacing = 0.02f;
         const float k_Frame = 1f / 60f;
@@ -78,6 +78,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.DomainMax = new float3(k_Box);
             m_Constants = new FluidConstants(p);
             m_Buffers = new FluidBuffers(Size, m_Constants.Grid);
+        }
+
+        /// <summary>One 1/60 s frame of the case's start (the step places the particles again).</summary>
+        public void WarmupFrames()
+        {
+            Place(m_Buffers);
+            Frame(k_Frame);
         }
 
         public void Step()

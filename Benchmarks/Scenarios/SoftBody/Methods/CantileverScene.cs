@@ -99,7 +99,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Details = "choosing-a-method.md#cantilever-methodstudycantilever",
         };
 
-        public override void PrepareReference() => CantileverTargets.Get(Setup);
+        public override object Reference() => CantileverTargets.Get(Setup);
+
+        public override Type ReferenceType => typeof(CantileverTargets);
+
+        public override void UseReference(object values) => CantileverTargets.Remember(Material, (CantileverTargets)values);
 
         /// <summary>
         /// The default run keeps the sweeps behind the scene's findings — mass-spring implicit Euler to 5 cells across (where it

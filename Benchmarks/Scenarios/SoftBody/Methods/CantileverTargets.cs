@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
@@ -25,6 +26,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static readonly Dictionary<(float, float, float), CantileverTargets> s_Cache =
             new Dictionary<(float, float, float), CantileverTargets>();
+
+        /// <summary>Takes <paramref name="targets"/> as the values of <paramref name="material"/>: values an earlier run computed from the same reference sources.</summary>
+        public static void Remember(in ElasticMaterial material, CantileverTargets targets)
+        {
+            lock (s_Cache)
+                s_Cache[(material.YoungsModulus, material.PoissonRatio, material.Density)] = targets;
+        }
 
         public static CantileverTargets Get(MethodBodySetup setup)
         {

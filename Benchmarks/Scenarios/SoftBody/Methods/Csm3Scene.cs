@@ -128,7 +128,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary><see cref="Measure(MethodBodySetup, Func{MethodBodySetup, IMethodBody})"/> against given targets (only their
         /// <see cref="Csm3Targets.UyMean"/>, <see cref="Csm3Targets.UyAmplitude"/> and <see cref="Csm3Targets.UyFrequency"/> are read).</summary>
-        public override void PrepareReference() => Csm3Targets.Get(Material);
+        public override object Reference() => Csm3Targets.Get(Material);
+
+        public override Type ReferenceType => typeof(Csm3Targets);
+
+        public override void UseReference(object values) => Csm3Targets.Remember(Material, (Csm3Targets)values);
 
         /// <summary>Explicit FEM diverges on this beam at 128 substeps and reaches 64 % at 256: the default run leaves it to --full.</summary>
         public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.Knobs;

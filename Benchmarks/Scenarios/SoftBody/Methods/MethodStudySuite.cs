@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// One scene of the method study as a suite: every method of <see cref="MethodCatalog"/> at every knob value, one
     /// table, one error-against-cost figure (one curve per method) and a ranking by the cost to reach 1 %, 5 % and 20 %.
     /// </summary>
-    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent, IScenarioSuitePreparation
+    public sealed class MethodStudySuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent, IScenarioSuiteStoredReference
     {
         readonly StudyScene m_Scene;
 
@@ -58,6 +58,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary>The scene's float64 reference.</summary>
         public void Prepare() => m_Scene.PrepareReference();
+
+        public System.Type ReferenceType => m_Scene.ReferenceType;
+        public object Reference() => m_Scene.Reference();
+        public void UseReference(object values) => m_Scene.UseReference(values);
 
         public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {

@@ -127,7 +127,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ColliderShape.Plane(new float3(0f, -0.5f * Stretch * Size, 0f), new float3(0f, 1f, 0f)),
         };
 
-        public override void PrepareReference() => SquashTargets.Get(Material);
+        public override object Reference() => SquashTargets.Get(Material);
+
+        public override Type ReferenceType => typeof(SquashTargets);
+
+        public override void UseReference(object values) => SquashTargets.Remember(Material, (SquashTargets)values);
 
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build) =>
             Measure(setup, build, SquashTargets.Get(setup.Material));

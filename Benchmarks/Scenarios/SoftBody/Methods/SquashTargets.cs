@@ -52,6 +52,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static readonly Dictionary<(float, float, float, float), SquashTargets> s_Cache = new Dictionary<(float, float, float, float), SquashTargets>();
 
+        /// <summary>Takes <paramref name="targets"/> as the values of <paramref name="material"/>: values an earlier run computed from the same reference sources.</summary>
+        public static void Remember(in ElasticMaterial material, SquashTargets targets)
+        {
+            lock (s_Cache)
+                s_Cache[(material.YoungsModulus, material.PoissonRatio, material.Density, material.DampingRatio)] = targets;
+        }
+
         /// <summary>The study's targets for <paramref name="material"/>, computed once (<see cref="ReferenceResolutions"/>, <see cref="ReferenceStepsPerFrame"/>).</summary>
         public static SquashTargets Get(in ElasticMaterial material)
         {

@@ -158,7 +158,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static string Fmt(double v) => v.ToString(Math.Abs(v) >= 100 ? "0.0" : "0.000", CultureInfo.InvariantCulture);
 
-        public override void PrepareReference() => StretchTargets.Get(Material);
+        public override object Reference() => StretchTargets.Get(Material);
+
+        public override Type ReferenceType => typeof(StretchTargets);
+
+        public override void UseReference(object values) => StretchTargets.Remember(Material, (StretchTargets)values);
 
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build) =>
             Measure(setup, build, StretchTargets.Get(setup.Material));

@@ -36,6 +36,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static readonly Dictionary<(float, float, float), StretchTargets> s_Cache = new Dictionary<(float, float, float), StretchTargets>();
 
+        /// <summary>Takes <paramref name="targets"/> as the values of <paramref name="material"/>: values an earlier run computed from the same reference sources.</summary>
+        public static void Remember(in ElasticMaterial material, StretchTargets targets)
+        {
+            lock (s_Cache)
+                s_Cache[(material.YoungsModulus, material.PoissonRatio, material.Density)] = targets;
+        }
+
         /// <summary>The targets of <paramref name="material"/> at <see cref="ReferenceResolutions"/>, computed once (about 10–30 s).</summary>
         public static StretchTargets Get(in ElasticMaterial material)
         {

@@ -90,7 +90,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public abstract IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build);
 
         /// <summary>Computes (and caches) the scene's float64 reference, which every <see cref="Measure"/> compares with.</summary>
-        public abstract void PrepareReference();
+        public void PrepareReference() => Reference();
+
+        /// <summary>The scene's float64 reference values, computed on the first call (then cached per material).</summary>
+        public abstract object Reference();
+
+        /// <summary>Type of <see cref="Reference"/>'s values.</summary>
+        public abstract Type ReferenceType { get; }
+
+        /// <summary>Takes stored values (of <see cref="ReferenceType"/>, from an earlier run of the same reference sources) as the scene's reference.</summary>
+        public abstract void UseReference(object values);
 
         /// <summary>"E = 1 MPa, ν = 0.45, ρ = 1100 kg/m³": a material's elastic constants for the definitions (ζ is stated where it applies).</summary>
         public static string MaterialText(in ElasticMaterial m)
