@@ -116,7 +116,7 @@ namespace SoftBodyDynamics.Runner
                 estimate.Finished(index, seconds);
                 index++;
                 if (computeReferences)
-                    report.ReferenceNote = WriteReferences(dir, storedPath, sourceHash, storable);
+                    report.ReferenceNote = WriteReferences(dir, storedPath, sourceHash, storable, options.Scope);
                 Collect();
             }
             foreach (PlannedSuite planned in plan.Suites)
@@ -186,10 +186,10 @@ namespace SoftBodyDynamics.Runner
         /// Writes the references a run computed (a full run always computes them) to its report folder and says how they
         /// compare with the stored ones.
         /// </summary>
-        static string WriteReferences(string dir, string storedPath, string sourceHash, List<IScenarioSuiteStoredReference> storable)
+        static string WriteReferences(string dir, string storedPath, string sourceHash, List<IScenarioSuiteStoredReference> storable, RunScope scope)
         {
             string written = Path.Combine(dir, ReferenceStore.FileName);
-            ReferenceStore.Write(written, sourceHash, storable, $"full run, {DateTime.UtcNow:yyyy-MM-dd}");
+            ReferenceStore.Write(written, sourceHash, storable, $"{RunOptions.ScopeName(scope)} run, {DateTime.UtcNow:yyyy-MM-dd}");
             List<string> differ = ReferenceStore.Differences(storedPath, written);
             string stored = $"`Tools~/Runner/{ReferenceStore.FileName}`";
             string tail = differ == null ? $"none are stored for these sources: copy it to {stored} for the default run to use"

@@ -85,7 +85,7 @@ namespace SoftBodyDynamics.Runner
                           (double.IsPositiveInfinity(t.TimedBudget) ? "" : $", and no more once they have taken {t.TimedBudget:0.#} s, at least {t.MinRepeats}") +
                           $") after a warm-up of at least {t.WarmupSeconds} s and {t.MinWarmupSteps} steps that goes on (up to {t.MaxWarmupSeconds} s) while the fastest step still improves" +
                           (t.ShortWarmups ? "; a step that is a whole run (dam break, droplet) is warmed up by the run's first few frames" : ""));
-            md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study, its stability suite, the fluid accuracy suite) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
+            md.AppendLine($"- Threads: every timed step runs alone on one thread; suites of independent scenarios (the method study and its stability suite, the fluid accuracy suite, the shape-matching convergence and frame-rate studies) set up and evaluate them on {m_Options.Threads} worker threads, which changes no result");
             if (ReferenceNote != null)
                 md.AppendLine($"- References: {ReferenceNote}");
             md.AppendLine("- Units: relative errors are fractions in results.csv (column `unit`) and percent in these tables.");

@@ -33,6 +33,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly Dictionary<int, FreeOscillationResult> m_Oscillations = new Dictionary<int, FreeOscillationResult>();
         double[] m_Mode;
         bool m_ModeSearched;
+        /// <summary>Guards the lazily computed members: scenarios of one study may be evaluated on different threads.</summary>
+        readonly object m_Lock = new object();
 
         static readonly Dictionary<(ShapeMatchingMode, ShapeMatchingClusterLayout, int), ConvergenceStudy> s_Studies =
             new Dictionary<(ShapeMatchingMode, ShapeMatchingClusterLayout, int), ConvergenceStudy>();
@@ -41,9 +43,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static ConvergenceStudy For(ShapeMatchingMode mode, ShapeMatchingClusterLayout layout, int referenceStepsPerFrame = ReferenceStepsPerFrame)
         {
             var key = (mode, layout, referenceStepsPerFrame);
-            if (!s_Studies.TryGetValue(key, out ConvergenceStudy study))
-                s_Studies[key] = study = new ConvergenceStudy(mode, layout, referenceStepsPerFrame);
-            return study;
+            lock (s_Studies)
+            {
+                if (!s_Studies.TryGetValue(key, out ConvergenceStudy study))
+                    s_Studies[key] = study = new ConvergenceStudy(mode, layout, referenceStepsPerFrame);
+                return study;
+            }
         }
 
         public ConvergenceStudy(ShapeMatchingMode mode, ShapeMatchingClusterLayout layout, int referenceStepsPerFrame = ReferenceStepsPerFrame)
@@ -62,13 +67,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             get
             {
-                if (m_Reference == null)
+                lock (m_Lock)
                 {
-                    m_CoarseReference = Release.ReferenceTrajectory(m_ReferenceSteps);
-                    m_Reference = Release.ReferenceTrajectory(2 * m_ReferenceSteps);
-                    m_ReferenceChange = Release.Error(m_CoarseReference, m_Reference);
+                    if (m_Reference == null)
+                    {
+                        m_CoarseReference = Release.ReferenceTrajectory(m_ReferenceSteps);
+                        m_Reference = Release.ReferenceTrajectory(2 * m_ReferenceSteps);
+                        m_ReferenceChange = Release.Error(m_CoarseReference, m_Reference);
+                    }
+                    return m_Reference;
                 }
-                return m_Reference;
             }
         }
 
@@ -98,19 +106,25 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>The solver's trajectory error with <paramref name="substeps"/> substeps per 1/60 s frame.</summary>
         public double Error(int substeps)
         {
-            if (!m_Errors.TryGetValue(substeps, out double e))
+            lock (m_Lock)
             {
-                m_Errors[substeps] = e = Release.Error(Release.SolverTrajectory(substeps, out int resets), Reference);
-                m_Resets[substeps] = resets;
+                if (!m_Errors.TryGetValue(substeps, out double e))
+                {
+                    m_Errors[substeps] = e = Release.Error(Release.SolverTrajectory(substeps, out int resets), Reference);
+                    m_Resets[substeps] = resets;
+                }
+                return e;
             }
-            return e;
         }
 
         /// <summary>NaN-guard resets of the solver's trajectory with <paramref name="substeps"/> substeps (0 expected).</summary>
         public int Resets(int substeps)
         {
-            Error(substeps);
-            return m_Resets[substeps];
+            lock (m_Lock)
+            {
+                Error(substeps);
+                return m_Resets[substeps];
+            }
         }
 
         /// <summary>Observed order of convergence between two substep counts: ln(e₁/e₂) / ln(n₂/n₁).</summary>
@@ -122,28 +136,34 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             get
             {
-                if (!m_ModeSearched)
+                lock (m_Lock)
                 {
-                    m_Mode = FullyResistedMode.Find(Release.Model, Mode);
-                    m_ModeSearched = true;
+                    if (!m_ModeSearched)
+                    {
+                        m_Mode = FullyResistedMode.Find(Release.Model, Mode);
+                        m_ModeSearched = true;
+                    }
+                    return m_Mode;
                 }
-                return m_Mode;
             }
         }
 
         /// <summary>Free oscillation of the fully resisted mode at 1/60 s steps and <paramref name="substeps"/> substeps (null mode: Valid false).</summary>
         public FreeOscillationResult Oscillation(int substeps)
         {
-            if (m_Oscillations.TryGetValue(substeps, out FreeOscillationResult r))
-                return r;
-            if (ResistedMode != null)
+            lock (m_Lock)
             {
-                ShapeMatchingParameters p = Release.Parameters;
-                p.Substeps = substeps;
-                r = FreeOscillation.Run(Release.Model, ResistedMode, p, ConvergenceRelease.FrameTime, float3.zero);
+                if (m_Oscillations.TryGetValue(substeps, out FreeOscillationResult r))
+                    return r;
+                if (ResistedMode != null)
+                {
+                    ShapeMatchingParameters p = Release.Parameters;
+                    p.Substeps = substeps;
+                    r = FreeOscillation.Run(Release.Model, ResistedMode, p, ConvergenceRelease.FrameTime, float3.zero);
+                }
+                m_Oscillations[substeps] = r;
+                return r;
             }
-            m_Oscillations[substeps] = r;
-            return r;
         }
     }
 }

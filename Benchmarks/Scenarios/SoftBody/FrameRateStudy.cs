@@ -23,15 +23,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Pattern of the fully resisted mode (linear goals on overlapping clusters have one).</summary>
         public readonly double[] ResistedMode;
         RestingSagReference? m_Reference;
+        /// <summary>Guards <see cref="Reference"/>: scenarios of one study may be evaluated on different threads.</summary>
+        readonly object m_Lock = new object();
 
         static readonly Dictionary<string, FrameRateStudy> s_Studies = new Dictionary<string, FrameRateStudy>();
 
         /// <summary>The shared study of a preset ("Jelly", "Rubber", "Clay", or "Clay (elastic)": Clay without plasticity).</summary>
         public static FrameRateStudy For(string preset)
         {
-            if (!s_Studies.TryGetValue(preset, out FrameRateStudy study))
-                s_Studies[preset] = study = new FrameRateStudy(preset);
-            return study;
+            lock (s_Studies)
+            {
+                if (!s_Studies.TryGetValue(preset, out FrameRateStudy study))
+                    s_Studies[preset] = study = new FrameRateStudy(preset);
+                return study;
+            }
         }
 
         /// <summary>The material of a preset name.</summary>
@@ -66,9 +71,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             get
             {
-                if (m_Reference == null)
-                    m_Reference = RestingSag.Extrapolate(Model, Parameters);
-                return m_Reference.Value;
+                lock (m_Lock)
+                {
+                    if (m_Reference == null)
+                        m_Reference = RestingSag.Extrapolate(Model, Parameters);
+                    return m_Reference.Value;
+                }
             }
         }
 

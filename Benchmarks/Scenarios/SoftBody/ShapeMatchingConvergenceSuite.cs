@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// same continuous model, with the observed order of convergence, and the fitted frequency and damping ratio of a
     /// fully resisted mode against the parameters, for every mode, layout and substep count.
     /// </summary>
-    public sealed class ShapeMatchingConvergenceSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
+    public sealed class ShapeMatchingConvergenceSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteIndependent
     {
         /// <summary>Metric: RMS over particles and frames of |x_solver − x_ref| over the body size (dimensionless).</summary>
         public const string TrajectoryError = "traj err";

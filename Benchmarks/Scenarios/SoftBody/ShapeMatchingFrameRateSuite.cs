@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// 1–32 requested substeps (default substep phase limit): resting height, sag and volume against the preset's
     /// dt → 0 rest, and frequency and damping ratio of a free oscillation against the preset's.
     /// </summary>
-    public sealed class ShapeMatchingFrameRateSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure
+    public sealed class ShapeMatchingFrameRateSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteIndependent
     {
         public const string Substeps = "substeps";
         public const string Phase = "wh";

@@ -73,6 +73,24 @@ namespace SoftBodyDynamics.Tests.Runner
             AssertSameBits(Serial(first), Concurrent(second), first);
         }
 
+        /// <summary>
+        /// The shape-matching studies share one lazily computed reference per family among their scenarios (locked): set up and
+        /// evaluated on threads first, then again one at a time, every metric has the same bits.
+        /// </summary>
+        [Test]
+        public void ShapeMatchingStudies_SetUpAndEvaluatedOnThreads_GiveTheSerialBits()
+        {
+            foreach (IScenarioSuite suite in new IScenarioSuite[] { new ShapeMatchingConvergenceSuite(), new ShapeMatchingFrameRateSuite() })
+            {
+                Assert.IsInstanceOf<IScenarioSuiteIndependent>(suite);
+                List<IScenario> first = suite.Scenarios(RunScope.Quick).ToList();
+                List<IScenario> second = suite.Scenarios(RunScope.Quick).ToList();
+                Assert.That(first.Count, Is.GreaterThanOrEqualTo(2));
+                List<IReadOnlyList<Metric>> concurrent = Concurrent(first);
+                AssertSameBits(Serial(second), concurrent, first);
+            }
+        }
+
         [Test]
         public void StabilityStudy_SetUpOnThreads_GivesTheSerialBits()
         {
