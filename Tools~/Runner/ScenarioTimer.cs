@@ -35,10 +35,10 @@ namespace SoftBodyDynamics.Runner
 
         /// <summary>
         /// The default and quick runs. The runner compiles every method optimised at its first call (no tiers), so a warm-up
-        /// only needs the first calls and warm caches: two steps and 50 ms, settled, at most 0.5 s (a few frames for a step that is
-        /// a whole run); then timed steps until they have taken 0.5 s, at least one.
+        /// only needs the first calls and warm caches: two steps and 20 ms in rounds of 10 ms, settled, at most 0.5 s (a few frames
+        /// for a step that is a whole run); then timed steps until they have taken 0.5 s, at least one.
         /// </summary>
-        public static readonly TimingRule Short = new TimingRule(0.05, 2, 0.02, 0.5, 0.5, 1, true);
+        public static readonly TimingRule Short = new TimingRule(0.02, 2, 0.01, 0.5, 0.5, 1, true);
     }
 
     /// <summary>Warm-up, then the median of repeated timed steps, and the bytes those steps allocated.</summary>
