@@ -64,7 +64,8 @@ namespace SoftBodyDynamics.Runner
                 computeReferences = used.Count < storable.Count;
                 report.ReferenceNote = used.Count > 0
                     ? $"the float64 reference values of {string.Join(", ", used)} are the stored ones (`Tools~/Runner/{ReferenceStore.FileName}`, " +
-                      $"computed by a full run from the same reference sources, SHA-256 {sourceHash.Substring(0, 12)}…); `--full` computes them again and compares"
+                      $"computed by a {ReferenceStore.ComputedBy(storedPath)} from the same reference sources, SHA-256 {sourceHash.Substring(0, 12)}…); " +
+                      "`--full` computes them again and compares"
                     : $"computed by this run ({why})";
                 if (computeReferences)
                     progress.WriteLine($"      references: {why}, so this run computes them and writes {ReferenceStore.FileName} to its report folder (to store in Tools~/Runner)");

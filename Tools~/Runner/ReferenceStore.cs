@@ -96,6 +96,10 @@ namespace SoftBodyDynamics.Runner
             return used;
         }
 
+        /// <summary>The stored file's "computed" entry (e.g. "default run, 2026-11-27"), or "earlier run".</summary>
+        public static string ComputedBy(string path) =>
+            File.Exists(path) ? (string)JsonNode.Parse(File.ReadAllText(path))?["computed"] ?? "earlier run" : "earlier run";
+
         /// <summary>Writes the (computed) reference values of <paramref name="suites"/> with their source hash to <paramref name="path"/>.</summary>
         public static void Write(string path, string sourceHash, IEnumerable<IScenarioSuiteStoredReference> suites, string computedBy)
         {
