@@ -191,7 +191,7 @@ namespace SoftBodyDynamics.Authoring
         public float restitution = k_Jelly.Restitution;
 
         [Tooltip("Speed (m/s) at which particles that start a step inside a collider are pushed out: a body spawned inside a "
-                 + "collider leaves it at this speed instead of being shot out. Default 2 m/s.")]
+                 + "collider leaves it at this speed, whole and along one direction, instead of being shot out. Default 2 m/s.")]
         [Min(0.001f)]
         public float maxDepenetrationSpeed = k_Solver.MaxDepenetrationSpeed;
 

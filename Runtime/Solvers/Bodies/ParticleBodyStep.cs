@@ -48,6 +48,7 @@ namespace SoftBodyDynamics.Solvers
                 return report;
             ContactProjection.Settings contact = constants.Contact;
             contact.Origin = status.Origin;
+            contact.WholeBody = true;
             if (status.Asleep)
             {
                 if (!ShouldWake(body, constants, contact, colliders, status))

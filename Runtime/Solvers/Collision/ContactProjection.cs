@@ -39,14 +39,28 @@ namespace SoftBodyDynamics.Solvers
             public float MaxDepenetration;
             /// <summary>World position of the particles' origin (m): colliders are in world space, particles relative to it.</summary>
             public float3 Origin;
+            /// <summary>
+            /// The particles are one body: while some particle starts a substep deeper than <see cref="MaxDepenetration"/> in a
+            /// collider, the whole body leaves that collider along one direction (see <see cref="Project"/>) instead of each
+            /// particle by its nearest face, which would tear the body around the collider. Off for fluids.
+            /// </summary>
+            public bool WholeBody;
         }
+
+        /// <summary>Colliders that can have a shared leaving direction in one call; further ones push each particle on its own.</summary>
+        public const int MaxSharedColliders = 32;
 
         /// <summary>
         /// Projects <paramref name="predicted"/> out of the colliders and adds each push to the velocity
         /// (Δv = Δx/h); a particle that arrives at a surface (from more than a tenth of its radius away) at
         /// v⁻ₙ = v·n &lt; −BounceThreshold leaves it at −e·v⁻ₙ. Of the overlap a particle already had at the
         /// start of the substep, at most <see cref="Settings.MaxDepenetration"/> is removed per substep, so a
-        /// body spawned inside a collider is not shot out of it. Writes each particle's contact normal (zero when
+        /// body spawned inside a collider is not shot out of it. With <see cref="Settings.WholeBody"/>, a collider in
+        /// which some particle starts deeper than that gets one leaving direction d for the body — the collider's outward
+        /// direction at the particles' centroid (<see cref="ParticleCollision.Outward"/>; planes excepted: they push every
+        /// particle the same way) — and, this substep, every particle moves at least MaxDepenetration along d (the body
+        /// leaves as a whole, undeformed, at the capped speed); a particle that is not deep is then pushed out as usual,
+        /// but never against d (it passes on through, as the body does). Writes each particle's contact normal (zero when
         /// free) to <paramref name="contactNormals"/>. Returns the number of particles in contact.
         /// </summary>
         /// <param name="previous">Positions at the start of the substep (for the swept test, friction and the depenetration cap).</param>
@@ -58,6 +72,9 @@ namespace SoftBodyDynamics.Solvers
             float invH = 1f / h;
             float radius = settings.Radius;
             bool rebased = math.any(settings.Origin != float3.zero);
+            Span<float3> leaving = stackalloc float3[settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0];
+            if (leaving.Length > 0)
+                LeavingDirections(previous, colliders, settings, leaving);
             for (int i = 0; i < predicted.Length; i++)
             {
                 float3 start = predicted[i];
@@ -66,6 +83,16 @@ namespace SoftBodyDynamics.Solvers
                 for (int c = 0; c < colliders.Length; c++)
                 {
                     ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                    float3 away = c < leaving.Length ? leaving[c] : float3.zero;
+                    bool bodyLeaves = math.lengthsq(away) > 0f;
+                    if (bodyLeaves)
+                    {
+                        // The whole body leaves along one direction: every particle moves at least MaxDepenetration along it.
+                        x += math.max(0f, settings.MaxDepenetration - math.dot(x - previous[i], away)) * away;
+                        contactNormal = away;
+                        if (StartsDeep(collider, previous[i], radius, settings.MaxDepenetration))
+                            continue;
+                    }
                     float3 n;
                     float depth;
                     // Pushed along the normal of the closest surface point, except when the swept test shows
@@ -81,6 +108,9 @@ namespace SoftBodyDynamics.Solvers
                         depth = math.dot(entry - x, face);
                     }
                     else if (!hit)
+                        continue;
+                    // While the body leaves this collider, nothing pushes a particle back the way the body came.
+                    if (bodyLeaves && math.dot(n, away) < 0f)
                         continue;
                     // Overlap carried over from the start of the substep leaves at a bounded speed.
                     if (ParticleCollision.Penetration(collider, previous[i], radius, out _, out float startDepth)
@@ -114,6 +144,49 @@ namespace SoftBodyDynamics.Solvers
                 predicted[i] = x;
             }
             return contacts;
+        }
+
+        /// <summary>True when a particle at <paramref name="x"/> overlaps the collider by more than <paramref name="maxDepenetration"/>.</summary>
+        static bool StartsDeep(in ColliderShape collider, float3 x, float radius, float maxDepenetration) =>
+            ParticleCollision.Penetration(collider, x, radius, out _, out float depth) && depth > maxDepenetration;
+
+        /// <summary>
+        /// For each collider (up to <paramref name="leaving"/>.Length): zero, or, when some particle starts deeper in it than
+        /// the depenetration cap, the collider's outward direction at the particles' centroid (summed in double).
+        /// </summary>
+        static void LeavingDirections(ReadOnlySpan<float3> previous, ReadOnlySpan<ColliderShape> colliders, in Settings settings, Span<float3> leaving)
+        {
+            leaving.Clear();
+            if (!(settings.MaxDepenetration < float.PositiveInfinity) || previous.Length == 0)
+                return;
+            bool rebased = math.any(settings.Origin != float3.zero);
+            double cx = 0.0, cy = 0.0, cz = 0.0;
+            bool centroidKnown = false;
+            float3 centroid = float3.zero;
+            for (int c = 0; c < leaving.Length; c++)
+            {
+                ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                // A plane pushes every particle the same way: it cannot tear a body.
+                if (collider.Type == ColliderShapeType.Plane)
+                    continue;
+                bool deep = false;
+                for (int i = 0; i < previous.Length && !deep; i++)
+                    deep = StartsDeep(collider, previous[i], settings.Radius, settings.MaxDepenetration);
+                if (!deep)
+                    continue;
+                if (!centroidKnown)
+                {
+                    for (int i = 0; i < previous.Length; i++)
+                    {
+                        cx += previous[i].x;
+                        cy += previous[i].y;
+                        cz += previous[i].z;
+                    }
+                    centroid = new float3((float)(cx / previous.Length), (float)(cy / previous.Length), (float)(cz / previous.Length));
+                    centroidKnown = true;
+                }
+                leaving[c] = ParticleCollision.Outward(collider, centroid);
+            }
         }
     }
 }

@@ -117,6 +117,45 @@ namespace SoftBodyDynamics.Solvers
             return true;
         }
 
+        /// <summary>
+        /// Unit direction out of <paramref name="shape"/> at a point <paramref name="x"/> inside or outside it: away from the
+        /// closest surface point when outside, through the nearest face (box) or away from the centre or axis (sphere,
+        /// capsule) when inside; the plane's normal; up at a sphere's centre or on a capsule's axis.
+        /// </summary>
+        public static float3 Outward(in ColliderShape shape, float3 x)
+        {
+            switch (shape.Type)
+            {
+                case ColliderShapeType.Plane:
+                    return shape.Axis;
+                case ColliderShapeType.Sphere:
+                    return AwayFrom(x, shape.Center);
+                case ColliderShapeType.Capsule:
+                    return AwayFrom(x, ClosestOnSegment(x, shape.Center, shape.Axis));
+                case ColliderShapeType.Box:
+                {
+                    float3 local = math.rotate(math.conjugate(shape.Rotation), x - shape.Center);
+                    float3 offset = local - math.clamp(local, -shape.HalfExtents, shape.HalfExtents);
+                    if (math.lengthsq(offset) > 0f)
+                        return math.rotate(shape.Rotation, math.normalize(offset));
+                    float3 gap = math.abs(local) - shape.HalfExtents;
+                    int axis = gap.x > gap.y ? (gap.x > gap.z ? 0 : 2) : (gap.y > gap.z ? 1 : 2);
+                    float3 n = float3.zero;
+                    n[axis] = local[axis] >= 0f ? 1f : -1f;
+                    return math.rotate(shape.Rotation, n);
+                }
+                default:
+                    return new float3(0f, 1f, 0f);
+            }
+        }
+
+        static float3 AwayFrom(float3 x, float3 center)
+        {
+            float3 r = x - center;
+            float d2 = math.lengthsq(r);
+            return d2 > 1e-24f ? r * math.rsqrt(d2) : new float3(0f, 1f, 0f);
+        }
+
         /// <summary>Closest point to <paramref name="x"/> on the segment a–b.</summary>
         public static float3 ClosestOnSegment(float3 x, float3 a, float3 b)
         {

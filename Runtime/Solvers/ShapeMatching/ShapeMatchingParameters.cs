@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Solvers
         public float MaxSubstepPhase;
         /// <summary>
         /// Largest speed (m/s) at which a particle that starts a substep inside a collider is pushed out. A body
-        /// spawned inside a collider leaves it at this speed instead of being shot out. Default 2 m/s.
+        /// spawned inside a collider leaves it at this speed, whole and along one direction, instead of being shot out. Default 2 m/s.
         /// </summary>
         public float MaxDepenetrationSpeed;
         /// <summary>Particle radius used against colliders (m).</summary>
