@@ -53,11 +53,19 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Parameters for <paramref name="material"/> on a body of characteristic length <paramref name="length"/> (m) in
         /// <paramref name="mode"/>: frequency from the fitted coefficient, ζ · <see cref="SlowestModeRatio"/>, β =
-        /// <see cref="Beta"/>, everything else from <paramref name="defaults"/>.
+        /// <see cref="Beta"/>, everything else from <paramref name="defaults"/>. The material must be valid
+        /// (<see cref="ElasticMaterial.IsValid"/>, as for mass-spring and FEM) and the length finite and above 0: otherwise this
+        /// throws an <see cref="System.ArgumentException"/> that says which value is wrong.
         /// </summary>
         public static ShapeMatchingParameters For(in ElasticMaterial material, float length, ShapeMatchingMode mode,
             in ShapeMatchingParameters defaults)
         {
+            if (!material.IsValid)
+                throw new System.ArgumentException(
+                    $"The material is invalid (E = {material.YoungsModulus} Pa, ν = {material.PoissonRatio}, ρ = {material.Density} kg/m³, " +
+                    $"ζ = {material.DampingRatio}): use E > 0, 0 ≤ ν < 0.5, ρ > 0 and ζ ≥ 0, all finite — the rule of every method.", nameof(material));
+            if (!(length > 0f) || !math.isfinite(length))
+                throw new System.ArgumentException($"The characteristic length is {length} m: it must be finite and above 0 m.", nameof(length));
             ShapeMatchingParameters p = defaults;
             p.Mode = mode;
             p.Frequency = Frequency(material, length, Coefficient(mode));

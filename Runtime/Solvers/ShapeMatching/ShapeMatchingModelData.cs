@@ -50,8 +50,9 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Precomputes everything the step needs from a rest shape and its clusters: nᵢ, the weights
         /// wᵢ = mᵢ/nᵢ, each cluster's rest data and, when <paramref name="buildQuadratic"/> is set,
-        /// the scaled 9×9 inverses of the quadratic mode. The inputs are not validated here: the
-        /// builder (<c>SoftBodyBuilder</c>) rejects bad meshes, masses and clusters with specific errors first.
+        /// the scaled 9×9 inverses of the quadratic mode. The builder (<c>SoftBodyBuilder</c>) reports bad meshes,
+        /// masses and clusters as issues first; called directly with such input, this throws an
+        /// <see cref="ArgumentException"/> that names the first bad value (<see cref="Check"/>).
         /// </summary>
         /// <param name="restPositions">Rest positions (m).</param>
         /// <param name="masses">Particle masses (kg, &gt; 0).</param>
@@ -70,6 +71,7 @@ namespace SoftBodyDynamics.Solvers
         public static ShapeMatchingModelData Create(float3[] restPositions, float[] masses, int[] clusterOffsets,
             int[] clusterParticles, bool buildQuadratic, bool[] pinned)
         {
+            Check(restPositions, masses, clusterOffsets, clusterParticles, pinned);
             bool anyPinned = pinned != null && Array.IndexOf(pinned, true) >= 0;
             int n = restPositions.Length;
             int clusters = clusterOffsets.Length - 1;
@@ -111,6 +113,40 @@ namespace SoftBodyDynamics.Solvers
             if (anyPinned)
                 data.PinParticles(pinned);
             return data;
+        }
+
+        /// <summary>
+        /// Throws an <see cref="ArgumentException"/> naming the first value <see cref="Create(float3[], float[], int[], int[], bool, bool[])"/>
+        /// cannot use: a missing array, a non-finite rest position, a mass that is not finite and above 0, CSR offsets that do not
+        /// start at 0, decrease or end past the particle list, or a particle index out of range.
+        /// </summary>
+        public static void Check(float3[] restPositions, float[] masses, int[] clusterOffsets, int[] clusterParticles, bool[] pinned = null)
+        {
+            if (restPositions == null || masses == null || clusterOffsets == null || clusterParticles == null)
+                throw new ArgumentNullException(restPositions == null ? nameof(restPositions) : masses == null ? nameof(masses)
+                    : clusterOffsets == null ? nameof(clusterOffsets) : nameof(clusterParticles));
+            int n = restPositions.Length;
+            if (masses.Length != n)
+                throw new ArgumentException($"{masses.Length} masses for {n} particles: give one mass per particle.", nameof(masses));
+            if (pinned != null && pinned.Length != n)
+                throw new ArgumentException($"{pinned.Length} pin flags for {n} particles: give one flag per particle, or none.", nameof(pinned));
+            for (int i = 0; i < n; i++)
+            {
+                if (!math.all(math.isfinite(restPositions[i])))
+                    throw new ArgumentException($"Rest position {i} is {restPositions[i]}: every rest position must be finite (m).", nameof(restPositions));
+                if (!(masses[i] > 0f) || !math.isfinite(masses[i]))
+                    throw new ArgumentException($"Mass {i} is {masses[i]} kg: every particle mass must be finite and above 0 kg (pin a particle to hold it still).",
+                        nameof(masses));
+            }
+            if (clusterOffsets.Length < 1 || clusterOffsets[0] != 0)
+                throw new ArgumentException("The cluster offsets must start with 0 (CSR: one offset per cluster, then the end).", nameof(clusterOffsets));
+            for (int c = 1; c < clusterOffsets.Length; c++)
+                if (clusterOffsets[c] < clusterOffsets[c - 1] || clusterOffsets[c] > clusterParticles.Length)
+                    throw new ArgumentException($"Cluster offset {c} is {clusterOffsets[c]}: the offsets must not decrease nor pass the {clusterParticles.Length} cluster particles.",
+                        nameof(clusterOffsets));
+            for (int k = 0; k < clusterParticles.Length; k++)
+                if ((uint)clusterParticles[k] >= (uint)n)
+                    throw new ArgumentException($"Cluster particle {k} is {clusterParticles[k]}: indices must be from 0 to {n - 1}.", nameof(clusterParticles));
         }
     }
 }
