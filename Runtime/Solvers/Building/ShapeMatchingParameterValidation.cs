@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Solvers
         public const int MinSubsteps = 1, MaxSubsteps = ShapeMatchingParameters.MaxSubsteps;
 
         /// <summary>Largest plausible particle radius (m); a larger one is nearly always a unit mistake.</summary>
-        public const float MaxParticleRadius = 100f;
+        public const float MaxParticleRadius = ParameterChecks.MaxParticleRadius;
 
         /// <summary>Appends an issue for every bad field (an error, or a warning for values that work but do less than they say); returns true when no error was added.</summary>
         public static bool Validate(in ShapeMatchingParameters p, List<SoftBodyIssue> issues)
@@ -45,48 +45,19 @@ namespace SoftBodyDynamics.Solvers
             if (Finite(issues, "MaxSubstepPhase", p.MaxSubstepPhase, "above 0 rad") && p.MaxSubstepPhase <= 0f)
                 Error(issues, SoftBodyIssueCode.MaxSubstepPhaseNotPositive, Invariant(
                     $"MaxSubstepPhase is {p.MaxSubstepPhase} rad; it must be above 0 (default {ShapeMatchingParameters.Default.MaxSubstepPhase} rad)."));
-            if (Finite(issues, "MaxDepenetrationSpeed", p.MaxDepenetrationSpeed, "above 0 m/s") && p.MaxDepenetrationSpeed <= 0f)
-                Error(issues, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive, Invariant(
-                    $"MaxDepenetrationSpeed is {p.MaxDepenetrationSpeed} m/s; it must be above 0 (default {ShapeMatchingParameters.Default.MaxDepenetrationSpeed} m/s), or a body inside a collider never leaves it."));
-            Finite(issues, "Acceleration.x", p.Acceleration.x, "in m/s²");
-            Finite(issues, "Acceleration.y", p.Acceleration.y, "in m/s²");
-            Finite(issues, "Acceleration.z", p.Acceleration.z, "in m/s²");
             if (p.Substeps < MinSubsteps || p.Substeps > MaxSubsteps)
                 Error(issues, SoftBodyIssueCode.SubstepsOutOfRange, Invariant($"Substeps is {p.Substeps}; it must be from {MinSubsteps} to {MaxSubsteps}."));
-            if (Finite(issues, "ParticleRadius", p.ParticleRadius, "in m") && (p.ParticleRadius <= 0f || p.ParticleRadius > MaxParticleRadius))
-                Error(issues, SoftBodyIssueCode.ParticleRadiusInvalid, Invariant(
-                    $"ParticleRadius is {p.ParticleRadius} m; it must be above 0 m and at most {MaxParticleRadius} m (check the units: metres)."));
-            if (Finite(issues, "Friction", p.Friction, "of at least 0") && p.Friction < 0f)
-                Error(issues, SoftBodyIssueCode.FrictionNegative, Invariant($"Friction is {p.Friction}; it must be at least 0 (0 = ice, 1 = rubber on concrete)."));
-            if (Finite(issues, "Restitution", p.Restitution, "in [0, 1]") && (p.Restitution < 0f || p.Restitution > 1f))
-                Error(issues, SoftBodyIssueCode.RestitutionOutOfRange, Invariant($"Restitution is {p.Restitution}; it must be in [0, 1] (0 = no bounce)."));
+            ParameterChecks.Contact(issues, p.Acceleration, p.MaxDepenetrationSpeed, ShapeMatchingParameters.Default.MaxDepenetrationSpeed,
+                p.ParticleRadius, p.Friction, p.Restitution);
             Plasticity(issues, "Plasticity.Yield", p.Plasticity.Yield);
             Plasticity(issues, "Plasticity.Creep", p.Plasticity.Creep);
             Plasticity(issues, "Plasticity.MaxDeformation", p.Plasticity.MaxDeformation);
             if (p.Mode == ShapeMatchingMode.Rigid && p.Plasticity.Enabled)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.PlasticityIgnoredInRigidMode, -1,
                     "Plasticity is set, but the mode is Rigid: rigid goals cannot hold a dent, so the body stays elastic. Use Linear or Quadratic for plastic bodies."));
-            if (Finite(issues, "SleepSpeed", p.SleepSpeed, "of at least 0 m/s") && p.SleepSpeed < 0f)
-                Error(issues, SoftBodyIssueCode.SleepSpeedNegative, Invariant($"SleepSpeed is {p.SleepSpeed} m/s; it must be at least 0 (0 = never sleeps)."));
-            if (Finite(issues, "SleepDelay", p.SleepDelay, "of at least 0 s") && p.SleepDelay < 0f)
-                Error(issues, SoftBodyIssueCode.SleepDelayNegative, Invariant($"SleepDelay is {p.SleepDelay} s; it must be at least 0 s."));
-            if (Finite(issues, "MaxSpeed", p.MaxSpeed, "above 0 m/s") && p.MaxSpeed <= 0f)
-                Error(issues, SoftBodyIssueCode.MaxSpeedNotPositive, Invariant($"MaxSpeed is {p.MaxSpeed} m/s; it must be above 0 (for example 500 m/s), or every step resets the body."));
-            if (p.RotationIterations < 1)
-                Error(issues, SoftBodyIssueCode.RotationIterationsInvalid, Invariant(
-                    $"RotationIterations is {p.RotationIterations}; it must be at least 1 (default {RotationExtraction.DefaultMaxIterations})."));
+            ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, p.RotationIterations);
 
             return !SoftBodyIssue.AnyError(issues, before);
-        }
-
-        /// <summary>Adds a <see cref="SoftBodyIssueCode.ParameterNotFinite"/> error and returns false when <paramref name="value"/> is NaN or infinite.</summary>
-        static bool Finite(List<SoftBodyIssue> issues, string field, float value, string expected)
-        {
-            if (math.isfinite(value))
-                return true;
-            string kind = math.isnan(value) ? "NaN" : "infinite";
-            Error(issues, SoftBodyIssueCode.ParameterNotFinite, Invariant($"{field} is {kind}; set a finite value {expected}."));
-            return false;
         }
 
         static void Plasticity(List<SoftBodyIssue> issues, string field, float value)
@@ -95,7 +66,9 @@ namespace SoftBodyDynamics.Solvers
                 Error(issues, SoftBodyIssueCode.PlasticityNegative, Invariant($"{field} is {value}; it must be at least 0 (all plasticity fields 0 = elastic)."));
         }
 
-        static void Error(List<SoftBodyIssue> issues, SoftBodyIssueCode code, string message) =>
-            issues.Add(SoftBodyIssue.Error(code, -1, message));
+        static bool Finite(List<SoftBodyIssue> issues, string field, float value, string expected) =>
+            ParameterChecks.Finite(issues, field, value, expected);
+
+        static void Error(List<SoftBodyIssue> issues, SoftBodyIssueCode code, string message) => ParameterChecks.Error(issues, code, message);
     }
 }

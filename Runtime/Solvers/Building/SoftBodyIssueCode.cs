@@ -200,6 +200,14 @@ namespace SoftBodyDynamics.Solvers
         /// substeps, a softer material, a lower resolution, or an unconditionally stable integrator.
         /// </summary>
         FemStepAboveStableLimit = 191,
+        /// <summary>The FEM material model or integrator is not one of the defined values.</summary>
+        FemModelInvalid = 192,
+        /// <summary>FEM substeps (1–256), XPBD iterations (1–64), CG iterations (1–10000) or Newton iterations (1–16) out of range.</summary>
+        FemIterationsOutOfRange = 193,
+        /// <summary>The conjugate-gradient tolerance is not a finite relative residual above 0 and below 1.</summary>
+        FemCgToleranceInvalid = 194,
+        /// <summary>The Rayleigh damping reference frequency is negative or not finite (0 = the model's estimate).</summary>
+        FemDampingFrequencyInvalid = 195,
 
         // ---- Fluids (FluidValidation)
 

@@ -1,0 +1,75 @@
+using System.Collections.Generic;
+using NUnit.Framework;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>One bad field at a time on top of <see cref="FemParameters.Default"/>; the fields FEM shares with shape matching get the same codes.</summary>
+    public class FemParameterValidationTests
+    {
+        public delegate void Spoil(ref FemParameters p);
+
+        static TestCaseData Case(string name, Spoil spoil, SoftBodyIssueCode code) =>
+            new TestCaseData(spoil, code).SetName($"FemValidate_Flags_{name}");
+
+        static IEnumerable<TestCaseData> BadFields()
+        {
+            yield return Case("ModelOutOfEnum", (ref FemParameters p) => p.Model = (FemMaterialModel)5, SoftBodyIssueCode.FemModelInvalid);
+            yield return Case("IntegratorOutOfEnum", (ref FemParameters p) => p.Integrator = (FemIntegrator)9, SoftBodyIssueCode.FemModelInvalid);
+            yield return Case("SubstepsZero", (ref FemParameters p) => p.Substeps = 0, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("SubstepsAboveMax", (ref FemParameters p) => p.Substeps = FemParameters.MaxSubsteps + 1, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("IterationsZero", (ref FemParameters p) => p.Iterations = 0, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("CgIterationsAboveMax", (ref FemParameters p) => p.CgIterations = FemParameters.MaxCgIterations + 1, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("NewtonIterationsNegative", (ref FemParameters p) => p.NewtonIterations = -1, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("CgToleranceZero", (ref FemParameters p) => p.CgTolerance = 0f, SoftBodyIssueCode.FemCgToleranceInvalid);
+            yield return Case("CgToleranceOne", (ref FemParameters p) => p.CgTolerance = 1f, SoftBodyIssueCode.FemCgToleranceInvalid);
+            yield return Case("CgToleranceNaN", (ref FemParameters p) => p.CgTolerance = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("DampingFrequencyNegative", (ref FemParameters p) => p.DampingFrequency = -1f, SoftBodyIssueCode.FemDampingFrequencyInvalid);
+            yield return Case("AccelerationInfinite", (ref FemParameters p) => p.Acceleration.y = float.NegativeInfinity, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("DepenetrationZero", (ref FemParameters p) => p.MaxDepenetrationSpeed = 0f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
+            yield return Case("ParticleRadiusZero", (ref FemParameters p) => p.ParticleRadius = 0f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("FrictionNegative", (ref FemParameters p) => p.Friction = -0.1f, SoftBodyIssueCode.FrictionNegative);
+            yield return Case("RestitutionAboveOne", (ref FemParameters p) => p.Restitution = 1.5f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("SleepSpeedNegative", (ref FemParameters p) => p.SleepSpeed = -1f, SoftBodyIssueCode.SleepSpeedNegative);
+            yield return Case("SleepDelayNegative", (ref FemParameters p) => p.SleepDelay = -1f, SoftBodyIssueCode.SleepDelayNegative);
+            yield return Case("MaxSpeedZero", (ref FemParameters p) => p.MaxSpeed = 0f, SoftBodyIssueCode.MaxSpeedNotPositive);
+            yield return Case("RotationIterationsZero", (ref FemParameters p) => p.RotationIterations = 0, SoftBodyIssueCode.RotationIterationsInvalid);
+        }
+
+        [Test]
+        public void Validate_DefaultParameters_HaveNoIssues()
+        {
+            var issues = new List<SoftBodyIssue>();
+            Assert.That(FemParameterValidation.Validate(FemParameters.Default, issues), Is.True);
+            Assert.That(issues, Is.Empty);
+        }
+
+        [TestCaseSource(nameof(BadFields))]
+        public void Validate_FlagsTheBadField(Spoil spoil, SoftBodyIssueCode code)
+        {
+            FemParameters p = FemParameters.Default;
+            spoil(ref p);
+            var issues = new List<SoftBodyIssue>();
+            bool valid = FemParameterValidation.Validate(p, issues);
+            Assert.That(issues.Count, Is.EqualTo(1), string.Join("; ", issues));
+            Assert.That(issues[0].Code, Is.EqualTo(code));
+            Assert.That(issues[0].Severity, Is.EqualTo(SoftBodyIssueSeverity.Error));
+            Assert.That(valid, Is.False);
+        }
+
+        [Test]
+        public void SharedField_GetsTheSameMessageAsInShapeMatching()
+        {
+            FemParameters f = FemParameters.Default;
+            f.Friction = -0.3f;
+            ShapeMatchingParameters s = ShapeMatchingParameters.Default;
+            s.Friction = -0.3f;
+            var fem = new List<SoftBodyIssue>();
+            var sm = new List<SoftBodyIssue>();
+            FemParameterValidation.Validate(f, fem);
+            ShapeMatchingParameterValidation.Validate(s, sm);
+            Assert.AreEqual(sm[0].Message, fem[0].Message);
+            Assert.AreEqual(sm[0].Code, fem[0].Code);
+        }
+    }
+}
