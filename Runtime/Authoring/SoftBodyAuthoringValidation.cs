@@ -15,7 +15,7 @@ namespace SoftBodyDynamics.Authoring
     ///    mesh, the build settings alone (<see cref="SoftBodyBuildSettingsValidation"/>);
     /// 4. the solver parameters (<see cref="ShapeMatchingParameterValidation"/>).
     /// For the mass-spring and FEM methods, steps 3 and 4 are instead: the physical material (<see cref="ElasticMaterial.IsValid"/>),
-    /// the FEM parameters (<see cref="FemParameterValidation"/>), the tetrahedralisation settings
+    /// the method's parameters (<see cref="MassSpringParameterValidation"/>, <see cref="FemParameterValidation"/>), the tetrahedralisation settings
     /// (<see cref="TetrahedralizationSettings.Validate"/>), the tetrahedraliser's and the
     /// model builder's checks (<see cref="TetrahedralBodyBuilder"/>), and a warning when an explicit integrator's substep at
     /// <see cref="AssumedFixedTimeStep"/> exceeds the model's stable step.
@@ -87,7 +87,9 @@ namespace SoftBodyDynamics.Authoring
                     Invariant($"The material of '{authoring.name}' is invalid (Young's modulus {material.YoungsModulus} Pa, Poisson ratio {material.PoissonRatio}, ")
                     + Invariant($"density {material.Density} kg/m³, damping ratio {material.DampingRatio}). Use a Young's modulus above 0, a Poisson ratio from 0 ")
                     + "to below 0.5, a density above 0 and a damping ratio of at least 0, or pick a preset."));
-            if (!massSpring)
+            if (massSpring)
+                MassSpringParameterValidation.Validate(authoring.MassSpringParameters, report.Issues);
+            else
                 FemParameterValidation.Validate(authoring.FemParameters, report.Issues);
             if (mesh == null || !materialValid)
             {

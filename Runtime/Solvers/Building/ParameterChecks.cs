@@ -42,8 +42,24 @@ namespace SoftBodyDynamics.Solvers
                 Error(issues, SoftBodyIssueCode.RestitutionOutOfRange, Invariant($"Restitution is {restitution}; it must be in [0, 1] (0 = no bounce)."));
         }
 
-        /// <summary>Sleep speed and delay, the guard's speed limit, and the rotation-extraction iterations.</summary>
-        public static void Guard(List<SoftBodyIssue> issues, float sleepSpeed, float sleepDelay, float maxSpeed, int rotationIterations)
+        /// <summary>Counts from 1 to <paramref name="max"/>: an error of <paramref name="code"/> naming the field otherwise.</summary>
+        public static void Count(List<SoftBodyIssue> issues, SoftBodyIssueCode code, string field, int value, int max, string what)
+        {
+            if (value < 1 || value > max)
+                Error(issues, code, Invariant($"{field} is {value}; it must be from 1 to {max} {what}."));
+        }
+
+        /// <summary>A conjugate-gradient tolerance: a finite relative residual below 1, above 0 (or 0 itself where the solver takes 0 as "every iteration").</summary>
+        public static void CgTolerance(List<SoftBodyIssue> issues, SoftBodyIssueCode code, float tolerance, float defaultTolerance, bool zeroRunsEveryIteration)
+        {
+            bool low = zeroRunsEveryIteration ? tolerance >= 0f : tolerance > 0f;
+            if (Finite(issues, "CgTolerance", tolerance, "below 1") && !(low && tolerance < 1f))
+                Error(issues, code, Invariant($"CgTolerance is {tolerance}; it must be a relative residual ") +
+                    (zeroRunsEveryIteration ? "from 0 (every iteration runs)" : "above 0") + Invariant($" and below 1 (default {defaultTolerance})."));
+        }
+
+        /// <summary>Sleep speed and delay, the guard's speed limit, and the rotation-extraction iterations (none: a method without rotations).</summary>
+        public static void Guard(List<SoftBodyIssue> issues, float sleepSpeed, float sleepDelay, float maxSpeed, int? rotationIterations)
         {
             if (Finite(issues, "SleepSpeed", sleepSpeed, "of at least 0 m/s") && sleepSpeed < 0f)
                 Error(issues, SoftBodyIssueCode.SleepSpeedNegative, Invariant($"SleepSpeed is {sleepSpeed} m/s; it must be at least 0 (0 = never sleeps)."));
@@ -51,7 +67,7 @@ namespace SoftBodyDynamics.Solvers
                 Error(issues, SoftBodyIssueCode.SleepDelayNegative, Invariant($"SleepDelay is {sleepDelay} s; it must be at least 0 s."));
             if (Finite(issues, "MaxSpeed", maxSpeed, "above 0 m/s") && maxSpeed <= 0f)
                 Error(issues, SoftBodyIssueCode.MaxSpeedNotPositive, Invariant($"MaxSpeed is {maxSpeed} m/s; it must be above 0 (for example 500 m/s), or every step resets the body."));
-            if (rotationIterations < 1)
+            if (rotationIterations.HasValue && rotationIterations.Value < 1)
                 Error(issues, SoftBodyIssueCode.RotationIterationsInvalid, Invariant(
                     $"RotationIterations is {rotationIterations}; it must be at least 1 (default {RotationExtraction.DefaultMaxIterations})."));
         }

@@ -167,6 +167,12 @@ namespace SoftBodyDynamics.Solvers
         /// Use more substeps, softer springs, or the ImplicitEuler or Xpbd integrator.
         /// </summary>
         MassSpringStepAboveStableLimit = 129,
+        /// <summary>The mass-spring integrator is not one of the defined values.</summary>
+        MassSpringIntegratorInvalid = 130,
+        /// <summary>Mass-spring substeps (1–256), XPBD iterations (1–64) or CG iterations (1–1000) out of range.</summary>
+        MassSpringIterationsOutOfRange = 131,
+        /// <summary>The mass-spring conjugate-gradient tolerance is not a finite relative residual above 0 and below 1.</summary>
+        MassSpringCgToleranceInvalid = 132,
 
         // ---- finite-element model (FemModelData.Create)
 

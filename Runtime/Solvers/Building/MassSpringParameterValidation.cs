@@ -1,0 +1,31 @@
+using System.Collections.Generic;
+using static System.FormattableString;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// Checks <see cref="MassSpringParameters"/> for values the solver cannot use, one issue per bad field, by the rule every
+    /// method follows: the fields it shares with the other particle bodies get the same codes and messages (<see cref="ParameterChecks"/>).
+    /// </summary>
+    public static class MassSpringParameterValidation
+    {
+        /// <summary>Appends an error for every bad field; returns true when none was added.</summary>
+        public static bool Validate(in MassSpringParameters p, List<SoftBodyIssue> issues)
+        {
+            int before = issues.Count;
+            if ((uint)p.Integrator > (uint)MassSpringIntegrator.Xpbd)
+                ParameterChecks.Error(issues, SoftBodyIssueCode.MassSpringIntegratorInvalid,
+                    Invariant($"Integrator is {(int)p.Integrator}, which is not Symplectic Euler, Verlet, Implicit Euler or XPBD."));
+            ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "Substeps", p.Substeps, MassSpringParameters.MaxSubsteps, "substeps per step");
+            ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "Iterations", p.Iterations, MassSpringParameters.MaxIterations,
+                "XPBD iterations per substep");
+            ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "CgIterations", p.CgIterations, MassSpringParameters.MaxCgIterations,
+                "conjugate-gradient iterations per substep");
+            ParameterChecks.CgTolerance(issues, SoftBodyIssueCode.MassSpringCgToleranceInvalid, p.CgTolerance, MassSpringParameters.Default.CgTolerance, true);
+            ParameterChecks.Contact(issues, p.Acceleration, p.MaxDepenetrationSpeed, MassSpringParameters.Default.MaxDepenetrationSpeed,
+                p.ParticleRadius, p.Friction, p.Restitution);
+            ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, null);
+            return !SoftBodyIssue.AnyError(issues, before);
+        }
+    }
+}

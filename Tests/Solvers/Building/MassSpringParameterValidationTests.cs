@@ -1,0 +1,57 @@
+using System.Collections.Generic;
+using NUnit.Framework;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>One bad field at a time on top of <see cref="MassSpringParameters.Default"/>; the shared fields get shape matching's codes and messages.</summary>
+    public class MassSpringParameterValidationTests
+    {
+        public delegate void Spoil(ref MassSpringParameters p);
+
+        static TestCaseData Case(string name, Spoil spoil, SoftBodyIssueCode code) =>
+            new TestCaseData(spoil, code).SetName($"MassSpringValidate_Flags_{name}");
+
+        static IEnumerable<TestCaseData> BadFields()
+        {
+            yield return Case("IntegratorOutOfEnum", (ref MassSpringParameters p) => p.Integrator = (MassSpringIntegrator)4, SoftBodyIssueCode.MassSpringIntegratorInvalid);
+            yield return Case("SubstepsZero", (ref MassSpringParameters p) => p.Substeps = 0, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
+            yield return Case("IterationsAboveMax", (ref MassSpringParameters p) => p.Iterations = MassSpringParameters.MaxIterations + 1, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
+            yield return Case("CgIterationsZero", (ref MassSpringParameters p) => p.CgIterations = 0, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
+            yield return Case("CgToleranceNegative", (ref MassSpringParameters p) => p.CgTolerance = -1e-4f, SoftBodyIssueCode.MassSpringCgToleranceInvalid);
+            yield return Case("CgToleranceOne", (ref MassSpringParameters p) => p.CgTolerance = 1f, SoftBodyIssueCode.MassSpringCgToleranceInvalid);
+            yield return Case("ParticleRadiusHuge", (ref MassSpringParameters p) => p.ParticleRadius = 1000f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("RestitutionNegative", (ref MassSpringParameters p) => p.Restitution = -0.1f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("SleepDelayNaN", (ref MassSpringParameters p) => p.SleepDelay = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("MaxSpeedNegative", (ref MassSpringParameters p) => p.MaxSpeed = -5f, SoftBodyIssueCode.MaxSpeedNotPositive);
+        }
+
+        [Test]
+        public void Validate_DefaultParameters_HaveNoIssues()
+        {
+            var issues = new List<SoftBodyIssue>();
+            Assert.That(MassSpringParameterValidation.Validate(MassSpringParameters.Default, issues), Is.True);
+            Assert.That(issues, Is.Empty);
+        }
+
+        [Test]
+        public void Validate_AcceptsAZeroCgTolerance_WhichRunsEveryIteration()
+        {
+            MassSpringParameters p = MassSpringParameters.Default;
+            p.CgTolerance = 0f;
+            Assert.That(MassSpringParameterValidation.Validate(p, new List<SoftBodyIssue>()), Is.True);
+        }
+
+        [TestCaseSource(nameof(BadFields))]
+        public void Validate_FlagsTheBadField(Spoil spoil, SoftBodyIssueCode code)
+        {
+            MassSpringParameters p = MassSpringParameters.Default;
+            spoil(ref p);
+            var issues = new List<SoftBodyIssue>();
+            bool valid = MassSpringParameterValidation.Validate(p, issues);
+            Assert.That(issues.Count, Is.EqualTo(1), string.Join("; ", issues));
+            Assert.That(issues[0].Code, Is.EqualTo(code));
+            Assert.That(valid, Is.False);
+        }
+    }
+}
