@@ -60,11 +60,11 @@ namespace SoftBodyDynamics.Runner
             bool computeReferences = storable.Count > 0 && options.Scope == RunScope.Full;
             if (storable.Count > 0 && options.Scope != RunScope.Full)
             {
-                List<string> used = ReferenceStore.Use(storedPath, sourceHash, storable, out string why);
+                List<string> used = ReferenceStore.Use(storedPath, sourceHash, storable, out string why, out string storedBy);
                 computeReferences = used.Count < storable.Count;
                 report.ReferenceNote = used.Count > 0
                     ? $"the float64 reference values of {string.Join(", ", used)} are the stored ones (`Tools~/Runner/{ReferenceStore.FileName}`, " +
-                      $"computed by a {ReferenceStore.ComputedBy(storedPath)} from the same reference sources, SHA-256 {sourceHash.Substring(0, 12)}…); " +
+                      $"computed by a {storedBy} from the same reference sources, SHA-256 {sourceHash.Substring(0, 12)}…); " +
                       "`--full` computes them again and compares"
                     : $"computed by this run ({why})";
                 if (computeReferences)

@@ -69,8 +69,11 @@ namespace SoftBodyDynamics.Runner
         /// Hands each suite its stored values when <paramref name="path"/> holds values of the sources hashed to
         /// <paramref name="sourceHash"/>; returns the names of the suites that took them.
         /// </summary>
-        public static List<string> Use(string path, string sourceHash, IEnumerable<IScenarioSuiteStoredReference> suites, out string why)
+        /// <param name="computedBy">The stored file's "computed" entry (e.g. "default run, 2026-11-27"); null when nothing was used.</param>
+        public static List<string> Use(string path, string sourceHash, IEnumerable<IScenarioSuiteStoredReference> suites, out string why,
+            out string computedBy)
         {
+            computedBy = null;
             var used = new List<string>();
             if (!File.Exists(path))
             {
@@ -93,12 +96,10 @@ namespace SoftBodyDynamics.Runner
                 used.Add(((IScenarioSuite)suite).Name);
             }
             why = used.Count > 0 ? "stored" : "none of this run's suites is stored";
+            if (used.Count > 0)
+                computedBy = (string)stored["computed"] ?? "earlier run";
             return used;
         }
-
-        /// <summary>The stored file's "computed" entry (e.g. "default run, 2026-11-27"), or "earlier run".</summary>
-        public static string ComputedBy(string path) =>
-            File.Exists(path) ? (string)JsonNode.Parse(File.ReadAllText(path))?["computed"] ?? "earlier run" : "earlier run";
 
         /// <summary>Writes the (computed) reference values of <paramref name="suites"/> with their source hash to <paramref name="path"/>.</summary>
         public static void Write(string path, string sourceHash, IEnumerable<IScenarioSuiteStoredReference> suites, string computedBy)

@@ -72,7 +72,8 @@ namespace SoftBodyDynamics.Solvers
             float invH = 1f / h;
             float radius = settings.Radius;
             bool rebased = math.any(settings.Origin != float3.zero);
-            Span<float3> leaving = stackalloc float3[settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0];
+            Span<float3> leaving = stackalloc float3[MaxSharedColliders];
+            leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
             if (leaving.Length > 0)
                 LeavingDirections(previous, colliders, settings, leaving);
             for (int i = 0; i < predicted.Length; i++)
@@ -85,12 +86,14 @@ namespace SoftBodyDynamics.Solvers
                     ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
                     float3 away = c < leaving.Length ? leaving[c] : float3.zero;
                     bool bodyLeaves = math.lengthsq(away) > 0f;
+                    // Overlap at the start of the substep: known up front while the body leaves this collider, else found on a hit.
+                    float startDepth = bodyLeaves ? StartDepth(collider, previous[i], radius) : -1f;
                     if (bodyLeaves)
                     {
                         // The whole body leaves along one direction: every particle moves at least MaxDepenetration along it.
                         x += math.max(0f, settings.MaxDepenetration - math.dot(x - previous[i], away)) * away;
                         contactNormal = away;
-                        if (StartsDeep(collider, previous[i], radius, settings.MaxDepenetration))
+                        if (startDepth > settings.MaxDepenetration)
                             continue;
                     }
                     float3 n;
@@ -113,8 +116,9 @@ namespace SoftBodyDynamics.Solvers
                     if (bodyLeaves && math.dot(n, away) < 0f)
                         continue;
                     // Overlap carried over from the start of the substep leaves at a bounded speed.
-                    if (ParticleCollision.Penetration(collider, previous[i], radius, out _, out float startDepth)
-                        && startDepth > settings.MaxDepenetration)
+                    if (startDepth < 0f)
+                        startDepth = StartDepth(collider, previous[i], radius);
+                    if (startDepth > settings.MaxDepenetration)
                         depth = math.min(depth, math.max(0f, depth - (startDepth - settings.MaxDepenetration)));
                     if (!(depth > 0f))
                         continue;
@@ -146,13 +150,13 @@ namespace SoftBodyDynamics.Solvers
             return contacts;
         }
 
-        /// <summary>True when a particle at <paramref name="x"/> overlaps the collider by more than <paramref name="maxDepenetration"/>.</summary>
-        static bool StartsDeep(in ColliderShape collider, float3 x, float radius, float maxDepenetration) =>
-            ParticleCollision.Penetration(collider, x, radius, out _, out float depth) && depth > maxDepenetration;
+        /// <summary>How deep (m) a particle at <paramref name="x"/> overlaps the collider; 0 when it does not.</summary>
+        static float StartDepth(in ColliderShape collider, float3 x, float radius) =>
+            ParticleCollision.Penetration(collider, x, radius, out _, out float depth) ? depth : 0f;
 
         /// <summary>
         /// For each collider (up to <paramref name="leaving"/>.Length): zero, or, when some particle starts deeper in it than
-        /// the depenetration cap, the collider's outward direction at the particles' centroid (summed in double).
+        /// the depenetration cap, the collider's outward direction at the particles' centroid.
         /// </summary>
         static void LeavingDirections(ReadOnlySpan<float3> previous, ReadOnlySpan<ColliderShape> colliders, in Settings settings, Span<float3> leaving)
         {
@@ -160,9 +164,8 @@ namespace SoftBodyDynamics.Solvers
             if (!(settings.MaxDepenetration < float.PositiveInfinity) || previous.Length == 0)
                 return;
             bool rebased = math.any(settings.Origin != float3.zero);
-            double cx = 0.0, cy = 0.0, cz = 0.0;
-            bool centroidKnown = false;
             float3 centroid = float3.zero;
+            bool centroidKnown = false;
             for (int c = 0; c < leaving.Length; c++)
             {
                 ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
@@ -171,22 +174,29 @@ namespace SoftBodyDynamics.Solvers
                     continue;
                 bool deep = false;
                 for (int i = 0; i < previous.Length && !deep; i++)
-                    deep = StartsDeep(collider, previous[i], settings.Radius, settings.MaxDepenetration);
+                    deep = StartDepth(collider, previous[i], settings.Radius) > settings.MaxDepenetration;
                 if (!deep)
                     continue;
                 if (!centroidKnown)
                 {
-                    for (int i = 0; i < previous.Length; i++)
-                    {
-                        cx += previous[i].x;
-                        cy += previous[i].y;
-                        cz += previous[i].z;
-                    }
-                    centroid = new float3((float)(cx / previous.Length), (float)(cy / previous.Length), (float)(cz / previous.Length));
+                    centroid = Centroid(previous);
                     centroidKnown = true;
                 }
                 leaving[c] = ParticleCollision.Outward(collider, centroid);
             }
+        }
+
+        /// <summary>Mean of the positions, summed in double.</summary>
+        static float3 Centroid(ReadOnlySpan<float3> x)
+        {
+            double cx = 0.0, cy = 0.0, cz = 0.0;
+            for (int i = 0; i < x.Length; i++)
+            {
+                cx += x[i].x;
+                cy += x[i].y;
+                cz += x[i].z;
+            }
+            return new float3((float)(cx / x.Length), (float)(cy / x.Length), (float)(cz / x.Length));
         }
     }
 }

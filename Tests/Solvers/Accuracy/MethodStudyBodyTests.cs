@@ -29,6 +29,18 @@ namespace SoftBodyDynamics.Tests.Solvers
                 yield return v.Create(setup, v.Knobs[0], 0.05f);
         }
 
+        [TestCase(new[] { 1, 2, 3, 4, 5 }, 0, RunScope.Standard, new[] { 1, 3, 5 })]
+        [TestCase(new[] { 1, 2, 3, 4 }, 0, RunScope.Standard, new[] { 1, 3, 4 })]
+        [TestCase(new[] { 1, 2, 3, 4, 5, 6 }, 5, RunScope.Standard, new[] { 1, 3, 5 })]
+        [TestCase(new[] { 1, 2, 3, 4, 5 }, 3, RunScope.Standard, new[] { 1, 2, 3 })]
+        [TestCase(new[] { 1, 2, 3, 4, 5 }, 3, RunScope.Full, new[] { 1, 2, 3, 4, 5 })]
+        [TestCase(new[] { 1, 2, 3, 4, 5 }, 0, RunScope.Quick, new[] { 0 })]
+        public void DefaultRun_ThinsLongResolutionSweeps_ToEveryOtherAndTheFinest(int[] resolutions, int standardMax, RunScope scope, int[] expected)
+        {
+            var variant = new MethodVariant("fake", "substeps", new[] { 1 }, new[] { 1 }, (s, k, h) => null, resolutions);
+            CollectionAssert.AreEqual(expected, variant.ResolutionsOf(scope, 10, standardMax));
+        }
+
         [Test]
         public void EveryMethod_HasTheMassOfTheMaterial()
         {

@@ -15,8 +15,8 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         /// <summary>Edge of the jelly cube (m), 4 cells of 6 tetrahedra: 125 particles 5 cm apart.</summary>
         const float k_Size = 0.2f;
-        /// <summary>The depenetration speed (m/s) of the study's bodies: every method's default.</summary>
-        const float k_MaxDepenetrationSpeed = 2f;
+        /// <summary>The depenetration speed (m/s) of the study's bodies: every method's default (shape matching's, mass-spring's and FEM's are equal).</summary>
+        static readonly float k_MaxDepenetrationSpeed = ShapeMatchingParameters.Default.MaxDepenetrationSpeed;
 
         /// <summary>Colliders off the cube's centre by 1 cm, that hold 27 of its 125 particles.</summary>
         static ColliderShape Collider(string shape) => shape switch
@@ -29,22 +29,13 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// <summary>Mass-weighted RMS distance of the particles from their centre of mass (m), in double.</summary>
         static double RmsRadius(IMethodBody b)
         {
-            double m = 0, cx = 0, cy = 0, cz = 0;
+            Vector3d c = BodyMeasures.Center(b.Positions, b.Masses);
+            double s = 0, m = 0;
             for (int i = 0; i < b.ParticleCount; i++)
             {
+                Vector3d d = (Vector3d)b.Positions[i] - c;
+                s += b.Masses[i] * Vector3d.Dot(d, d);
                 m += b.Masses[i];
-                cx += b.Masses[i] * b.Positions[i].x;
-                cy += b.Masses[i] * b.Positions[i].y;
-                cz += b.Masses[i] * b.Positions[i].z;
-            }
-            cx /= m;
-            cy /= m;
-            cz /= m;
-            double s = 0;
-            for (int i = 0; i < b.ParticleCount; i++)
-            {
-                double dx = b.Positions[i].x - cx, dy = b.Positions[i].y - cy, dz = b.Positions[i].z - cz;
-                s += b.Masses[i] * (dx * dx + dy * dy + dz * dz);
             }
             return Math.Sqrt(s / m);
         }
@@ -58,10 +49,13 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         /// <summary>
-        /// 2 s without gravity. Wrapped around the collider (the inner particles on its surface), the body's RMS radius grew by
-        /// 7–12 % (or a spring network folded to 0.8); leaving whole it stays within 3 % (elastic ringing of the push).
-        /// The push moves the body at the depenetration speed; what the shallow particles' own push-out adds stays below
-        /// the same again.
+        /// 2 s without gravity. A body wrapped around the collider (its inner particles pushed out on the collider's surface)
+        /// has an RMS radius 7–12 % above its rest one (box and sphere with the per-particle push, every method but Neo-Hookean
+        /// implicit FEM, which the guard reset instead);
+        /// one that left whole is back at rest size — within 1e-4 for every method and shape here — so 3 % separates the two.
+        /// The whole body moves at the depenetration speed; the shallow particles' own push-out adds to it (up to 1.51× the
+        /// cap here, co-rotational implicit FEM against the box); the per-particle push let the hybrid body reach 17–21× the cap
+        /// and Neo-Hookean implicit FEM 215× (then reset).
         /// </summary>
         [Test]
         public void BodySpawnedAroundACollider_LeavesItWhole([ValueSource(nameof(Methods))] string family, [Values("box", "sphere", "capsule")] string shape)
@@ -132,7 +126,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 results[wholeBody ? 0 : 1] = x;
             }
             Assert.AreEqual(results[1], results[0]);
-            Assert.AreEqual(new float3(0f, -0.19f, 0f).y, results[0][0].y, 1e-6f, "the deep particle rises by the cap");
+            Assert.AreEqual(-0.19f, results[0][0].y, 1e-6f, "the deep particle rises by the cap");
             Assert.AreEqual(start[1], results[0][1], "the free particle stays");
         }
     }

@@ -79,7 +79,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 ShapeMatchingParameters.Default));
 
         [Test]
-        public void Calibration_OfAValidMaterial_GivesTheFittedFrequency()
+        public void Calibration_AcceptsAValidMaterial_AndGivesTheFittedFrequency()
         {
             ShapeMatchingParameters p = ShapeMatchingCalibration.For(ElasticMaterial.Rubber, 0.1f, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
             Assert.AreEqual(ShapeMatchingCalibration.Frequency(ElasticMaterial.Rubber, 0.1f, ShapeMatchingCalibration.LinearCoefficient), p.Frequency);

@@ -91,9 +91,10 @@ namespace SoftBodyDynamics.Tests.Runner
             ReferenceStore.Write(path, "abc", new[] { computed }, "test");
 
             var fresh = new StoredFakeSuite("Beam");
-            List<string> used = ReferenceStore.Use(path, "abc", new[] { fresh }, out string why);
+            List<string> used = ReferenceStore.Use(path, "abc", new[] { fresh }, out string why, out string computedBy);
             CollectionAssert.AreEqual(new[] { "Beam" }, used);
             Assert.AreEqual("stored", why);
+            Assert.AreEqual("test", computedBy);
             fresh.Prepare();
             Assert.AreEqual(0, fresh.Computed);
             FakeValues a = computed.Values(), b = fresh.Values();
@@ -112,7 +113,8 @@ namespace SoftBodyDynamics.Tests.Runner
             string path = Path.Combine(TempDir(), ReferenceStore.FileName);
             ReferenceStore.Write(path, "old", new[] { new StoredFakeSuite("Beam") }, "test");
             var fresh = new StoredFakeSuite("Beam");
-            Assert.IsEmpty(ReferenceStore.Use(path, "new", new[] { fresh }, out string why));
+            Assert.IsEmpty(ReferenceStore.Use(path, "new", new[] { fresh }, out string why, out string computedBy));
+            Assert.IsNull(computedBy);
             StringAssert.Contains("changed", why);
             fresh.Prepare();
             Assert.AreEqual(1, fresh.Computed);

@@ -48,8 +48,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             int[] swept = Array.FindAll(Resolutions, n => n <= cap);
             if (scope != RunScope.Standard || swept.Length <= 3)
                 return swept;
-            int last = swept.Length - 1;
-            return Array.FindAll(swept, n => Array.IndexOf(swept, n) % 2 == 0 || Array.IndexOf(swept, n) == last);
+            var thinned = new System.Collections.Generic.List<int>();
+            for (int k = 0; k < swept.Length; k += 2)
+                thinned.Add(swept[k]);
+            if (swept.Length % 2 == 0)
+                thinned.Add(swept[swept.Length - 1]);
+            return thinned.ToArray();
         }
 
         /// <summary>"family; knob unit", the scenario's method text (the figure splits it at the semicolon before the knob).</summary>
