@@ -7,9 +7,10 @@ namespace SoftBodyDynamics.Solvers
     /// The element passes of the finite-element step, written as range functions (start, end) so a job can run them
     /// per batch: each element writes its four nodal values to its slots (4e + corner), and
     /// <see cref="ElementIncidence.Gather"/> sums them per node in a fixed order. The result has the same bits for any
-    /// split of either pass among workers and any order of the batches.
+    /// split of either pass among workers and any order of the batches. Quadratic elements (<see cref="FemModel.IsQuadratic"/>)
+    /// run the same per-point material laws at their 4 integration points (<see cref="FemForces"/> in QuadraticFemForces.cs).
     /// </summary>
-    public static class FemForces
+    public static partial class FemForces
     {
         /// <summary>
         /// Elastic plus damping forces of elements [<paramref name="start"/>, <paramref name="end"/>) into their slots:
@@ -22,8 +23,8 @@ namespace SoftBodyDynamics.Solvers
         public static int Elastic(in FemModel model, FemMaterialModel materialModel, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v,
             float beta, Span<quaternion> rotations, int rotationIterations, Span<float3> slots, int start, int end)
         {
-            float mu = model.Mu, lambda = model.Lambda;
-            float lambdaSnh = FemElasticity.NeoHookeanLambda(mu, lambda);
+            if (model.IsQuadratic)
+                return QuadraticElastic(model, materialModel, x, v, beta, rotations, rotationIterations, slots, start, end);
             bool damped = beta > 0f;
             int inverted = 0;
             for (int e = start; e < end; e++)
@@ -33,32 +34,34 @@ namespace SoftBodyDynamics.Solvers
                 float3x3 f = FemElasticity.DeformationGradient(x[n.x], x[n.y], x[n.z], x[n.w], element.InverseRestShape);
                 if (!(math.determinant(f) > 0f))
                     inverted++;
-                float3x3 p;
-                if (materialModel == FemMaterialModel.CoRotational)
-                {
-                    quaternion q = rotations[e];
-                    RotationExtraction.Extract(f, ref q, rotationIterations);
-                    rotations[e] = q;
-                    var r = new float3x3(q);
-                    p = FemElasticity.CoRotationalStress(f, r, mu, lambda);
-                    if (damped)
-                    {
-                        float3x3 fDot = FemElasticity.DeformationGradient(v[n.x], v[n.y], v[n.z], v[n.w], element.InverseRestShape);
-                        p += beta * FemElasticity.WarpedStressDifferential(r, fDot, mu, lambda);
-                    }
-                }
-                else
-                {
-                    p = FemElasticity.NeoHookeanStress(f, mu, lambdaSnh);
-                    if (damped)
-                    {
-                        float3x3 fDot = FemElasticity.DeformationGradient(v[n.x], v[n.y], v[n.z], v[n.w], element.InverseRestShape);
-                        p += FemElasticity.StrainRateDampingStress(f, fDot, beta, mu, lambda);
-                    }
-                }
+                float3x3 fDot = damped
+                    ? FemElasticity.DeformationGradient(v[n.x], v[n.y], v[n.z], v[n.w], element.InverseRestShape)
+                    : float3x3.zero;
+                float3x3 p = PointStress(model, materialModel, f, fDot, beta, ref rotations[e], rotationIterations);
                 FemElasticity.NodalForces(p, element, slots.Slice(4 * e, 4));
             }
             return inverted;
+        }
+
+        /// <summary>
+        /// The stress P (Pa) of one integration point with deformation gradient <paramref name="f"/> and its rate
+        /// <paramref name="fDot"/> (read when <paramref name="beta"/> &gt; 0): co-rotational, the rotation re-extracted
+        /// (warm-started at <paramref name="rotation"/>, which it updates) and β K_R damping; Neo-Hookean, the strain-rate damping.
+        /// </summary>
+        static float3x3 PointStress(in FemModel model, FemMaterialModel materialModel, in float3x3 f, in float3x3 fDot, float beta,
+            ref quaternion rotation, int rotationIterations)
+        {
+            float mu = model.Mu, lambda = model.Lambda;
+            bool damped = beta > 0f;
+            if (materialModel == FemMaterialModel.CoRotational)
+            {
+                RotationExtraction.Extract(f, ref rotation, rotationIterations);
+                var r = new float3x3(rotation);
+                float3x3 p = FemElasticity.CoRotationalStress(f, r, mu, lambda);
+                return damped ? p + beta * FemElasticity.WarpedStressDifferential(r, fDot, mu, lambda) : p;
+            }
+            float3x3 pn = FemElasticity.NeoHookeanStress(f, mu, FemElasticity.NeoHookeanLambda(mu, lambda));
+            return damped ? pn + FemElasticity.StrainRateDampingStress(f, fDot, beta, mu, lambda) : pn;
         }
 
         /// <summary>
@@ -69,6 +72,11 @@ namespace SoftBodyDynamics.Solvers
         public static void WarpedStiffness(in FemModel model, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> u,
             Span<float3> slots, int start, int end)
         {
+            if (model.IsQuadratic)
+            {
+                QuadraticWarpedStiffness(model, rotations, u, slots, start, end);
+                return;
+            }
             float mu = model.Mu, lambda = model.Lambda;
             for (int e = start; e < end; e++)
             {
@@ -91,6 +99,8 @@ namespace SoftBodyDynamics.Solvers
         public static int NeoHookeanTangents(in FemModel model, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, float h,
             Span<quaternion> rotations, int rotationIterations, Span<float3> tangents, Span<float3> slots, int start, int end)
         {
+            if (model.IsQuadratic)
+                return QuadraticNeoHookeanTangents(model, x, v, h, rotations, rotationIterations, tangents, slots, start, end);
             float mu = model.Mu;
             float lambdaSnh = FemElasticity.NeoHookeanLambda(mu, model.Lambda);
             bool moving = v.Length > 0;
@@ -115,7 +125,7 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// V (Ψ(F + D) − Ψ(F)) (J) of elements [<paramref name="start"/>, <paramref name="end"/>) into slots[4e].x (the other
+        /// V (Ψ(F + D) − Ψ(F)) (J) of elements [<paramref name="start"/>, <paramref name="end"/>) into the element's first slot's x (the other
         /// corners untouched): the stable Neo-Hookean energy change when the positions x + h v move by
         /// <paramref name="step"/> h <paramref name="dv"/> (F = F(x) + h F(v), D = step h F(dv); see
         /// <see cref="FemElasticity.NeoHookeanEnergyChange"/>). The line search of the implicit step sums them in element order.
@@ -123,6 +133,11 @@ namespace SoftBodyDynamics.Solvers
         public static void NeoHookeanEnergyChange(in FemModel model, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v,
             ReadOnlySpan<float3> dv, float h, float step, Span<float3> slots, int start, int end)
         {
+            if (model.IsQuadratic)
+            {
+                QuadraticNeoHookeanEnergyChange(model, x, v, dv, h, step, slots, start, end);
+                return;
+            }
             float mu = model.Mu;
             float lambdaSnh = FemElasticity.NeoHookeanLambda(mu, model.Lambda);
             for (int e = start; e < end; e++)
@@ -145,6 +160,11 @@ namespace SoftBodyDynamics.Solvers
         public static void NeoHookeanStiffness(in FemModel model, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
             ReadOnlySpan<float3> u, Span<float3> slots, int start, int end)
         {
+            if (model.IsQuadratic)
+            {
+                QuadraticNeoHookeanStiffness(model, rotations, tangents, u, slots, start, end);
+                return;
+            }
             for (int e = start; e < end; e++)
             {
                 TetElement element = model.Elements[e];

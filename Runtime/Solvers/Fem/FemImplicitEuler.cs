@@ -6,11 +6,13 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// One backward-Euler substep of a finite-element body: M(v⁺ − v) = h (f(x + h v⁺) − C v⁺), x⁺ = x + h v⁺, with the
     /// Rayleigh damping C = β K. Each linear system is solved matrix-free by conjugate gradients (K·p per element into
-    /// its slots, gathered per node through <see cref="ElementIncidence"/>) with a Jacobi preconditioner
-    /// (mᵢ + (hβ + h²) kᵢ, kᵢ the rotation-invariant rest diagonal of <see cref="FemModel.StiffnessDiagonal"/>), pinned
-    /// nodes filtered out of every vector. Its matrix M + (hβ + h²) K is symmetric positive definite for any h, so the
-    /// substep is stable at any step length. The velocities on entry already hold the substep's gravity (the shared step
-    /// adds it first), which is the same system with f + Mg.
+    /// its slots, gathered per node through <see cref="ElementIncidence"/>) with the block-Jacobi preconditioner of
+    /// <see cref="FemBlockJacobi"/> (node i's 3×3 diagonal block of M + (hβ + h²) K_R at the current rotations), pinned
+    /// nodes filtered out of every vector, warm-started from the previous substep's Δv when the caller keeps it
+    /// (<see cref="FemState.WarmStart"/>), and stopped at the relative residual ‖b − A Δv‖ ≤ tolerance ‖b‖. Its matrix
+    /// M + (hβ + h²) K is symmetric positive definite for any h, so the substep is stable at any step length (first order
+    /// in h). The velocities on entry already hold the substep's gravity (the shared step adds it first), which is the
+    /// same system with f + Mg.
     /// <para>
     /// Co-rotational: one linearly implicit step (Baraff &amp; Witkin 1998, eq. 6) on the warped stiffness
     /// K_R = R K₀ Rᵀ (Müller &amp; Gross 2004), forces and K_R at x:
@@ -43,37 +45,27 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         const double k_LineSearchSlack = 1e-5;
 
-        /// <summary>One co-rotational substep (see the class comment); adds Δv to <paramref name="v"/>. Returns the CG iterations taken.</summary>
-        /// <param name="forces">Scratch, one per node.</param>
-        /// <param name="work">Scratch, <see cref="FemState.WorkVectors"/> per node.</param>
-        /// <param name="converged">True when ‖r‖ ≤ <paramref name="tolerance"/> ‖b‖ was reached.</param>
-        /// <param name="inverted">Elements with det F ≤ 0 at x.</param>
-        public static int Solve(in FemModel model, ReadOnlySpan<float3> x, Span<float3> v, Span<quaternion> rotations,
-            int rotationIterations, Span<float3> slots, Span<float3> forces, Span<float3> work, float h, float beta,
-            int maxIterations, float tolerance, out bool converged, out int inverted) =>
-            Solve(model, FemMaterialModel.CoRotational, x, v, rotations, default, rotationIterations, slots, forces, work, h, beta, 1,
-                maxIterations, tolerance, out converged, out inverted);
-
         /// <summary>One substep of <paramref name="materialModel"/> (see the class comment); updates <paramref name="v"/>. Returns the CG iterations taken, summed over the Newton iterations.</summary>
-        /// <param name="rotations">Per element: the rotation R, the warm start of its extraction (updated).</param>
-        /// <param name="tangents">Neo-Hookean: scratch, <see cref="NeoHookeanTangent.Float3Count"/> per element (unused by the co-rotational model).</param>
+        /// <param name="rotations">Per integration point: the rotation R, the warm start of its extraction (updated).</param>
+        /// <param name="tangents">Neo-Hookean: scratch, <see cref="NeoHookeanTangent.Float3Count"/> per integration point (unused by the co-rotational model).</param>
         /// <param name="scratch">Scratch, one per node.</param>
         /// <param name="work">Scratch, <see cref="FemState.WorkVectors"/> per node.</param>
+        /// <param name="warmStart">Per node: the previous substep's Δv, the first guess of this one's (updated); empty = start from 0.</param>
         /// <param name="newtonIterations">Neo-Hookean: Newton iterations (clamped to 1 … <see cref="MaxNewtonIterations"/>). The co-rotational model takes one linear step.</param>
         /// <param name="converged">True when every CG solve reached ‖r‖ ≤ <paramref name="tolerance"/> ‖b‖.</param>
+        /// <param name="residual">The largest relative residual ‖r‖/‖b‖ a CG solve of the substep ended at (0 when none ran).</param>
         /// <param name="inverted">Elements with det F ≤ 0 at x.</param>
         public static int Solve(in FemModel model, FemMaterialModel materialModel, ReadOnlySpan<float3> x, Span<float3> v,
             Span<quaternion> rotations, Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch,
-            Span<float3> work, float h, float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged,
-            out int inverted)
+            Span<float3> work, Span<float3> warmStart, float h, float beta, int newtonIterations, int maxIterations, float tolerance,
+            out bool converged, out float residual, out int inverted)
         {
             if (materialModel == FemMaterialModel.NeoHookean)
-                return SolveNeoHookean(model, x, v, rotations, tangents, rotationIterations, slots, scratch, work, h, beta,
-                    math.clamp(newtonIterations, 1, MaxNewtonIterations), maxIterations, tolerance, out converged, out inverted);
+                return SolveNeoHookean(model, x, v, rotations, tangents, rotationIterations, slots, scratch, work, warmStart, h, beta,
+                    math.clamp(newtonIterations, 1, MaxNewtonIterations), maxIterations, tolerance, out converged, out residual, out inverted);
 
             int n = x.Length, elements = model.ElementCount;
-            Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
-                q = work.Slice(4 * n, n);
+            Span<float3> dv = work.Slice(0, n), b = work.Slice(n, n);
             Span<float3> forces = scratch.Slice(0, n);
             ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
 
@@ -81,37 +73,36 @@ namespace SoftBodyDynamics.Solvers
             inverted = FemForces.Elastic(model, FemMaterialModel.CoRotational, x, default, 0f, rotations, rotationIterations, slots, 0, elements);
             FemForces.Gather(model, slots, forces, 0, n);
             FemForces.WarpedStiffness(model, rotations, v, slots, 0, elements);
-            FemForces.Gather(model, slots, q, 0, n);
+            FemForces.Gather(model, slots, b, 0, n);
             float c = h * beta + h * h;
-            float bb = 0f;
             for (int i = 0; i < n; i++)
-            {
-                r[i] = w[i] > 0f ? h * (forces[i] + (beta + h) * q[i]) : float3.zero;
-                dv[i] = float3.zero;
-                bb += math.lengthsq(r[i]);
-            }
-            int iterations = ConjugateGradient(model, false, rotations, default, slots, dv, r, z, p, q, c, bb, maxIterations, tolerance,
-                out converged);
+                b[i] = w[i] > 0f ? h * (forces[i] + (beta + h) * b[i]) : float3.zero;
+            FemBlockJacobi.Build(model, rotations, slots, work, c);
+            int iterations = ConjugateGradient(model, false, rotations, default, slots, work, warmStart, c, maxIterations, tolerance,
+                out converged, out residual);
             RemoveMomentumError(dv, m, w);
             for (int i = 0; i < n; i++)
                 v[i] += dv[i];
+            if (warmStart.Length == n)
+                dv.CopyTo(warmStart);
             return iterations;
         }
 
         /// <summary>The Newton iterations of the Neo-Hookean model (see the class comment).</summary>
         static int SolveNeoHookean(in FemModel model, ReadOnlySpan<float3> x, Span<float3> v, Span<quaternion> rotations,
-            Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch, Span<float3> work, float h,
-            float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged, out int inverted)
+            Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch, Span<float3> work,
+            Span<float3> warmStart, float h, float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged,
+            out float residual, out int inverted)
         {
             int n = x.Length, elements = model.ElementCount;
-            Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
-                q = work.Slice(4 * n, n);
+            Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), q = work.Slice(4 * n, n);
             // v_k − v: the velocity change of the earlier iterations.
             Span<float3> accumulated = scratch.Slice(0, n);
             accumulated.Clear();
             ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
             float c = h * beta + h * h;
             converged = true;
+            residual = 0f;
             inverted = 0;
             int iterations = 0;
             for (int k = 0; k < newtonIterations; k++)
@@ -129,14 +120,15 @@ namespace SoftBodyDynamics.Solvers
                 for (int i = 0; i < n; i++)
                 {
                     r[i] = w[i] > 0f ? h * (r[i] + damping * q[i]) - m[i] * accumulated[i] : float3.zero;
-                    dv[i] = float3.zero;
                     bb += math.lengthsq(r[i]);
                 }
                 if (!(bb > 0f))
                     break; // at the solution (or a non-finite state the guard will catch)
-                iterations += ConjugateGradient(model, true, rotations, tangents, slots, dv, r, z, p, q, c, bb, maxIterations, tolerance,
-                    out bool solved);
+                FemBlockJacobi.Build(model, rotations, slots, work, c);
+                iterations += ConjugateGradient(model, true, rotations, tangents, slots, work, k == 0 ? warmStart : default, c,
+                    maxIterations, tolerance, out bool solved, out float reached);
                 converged &= solved;
+                residual = math.max(residual, reached);
                 RemoveMomentumError(dv, m, w);
                 float step = LineSearch(model, x, v, dv, accumulated, rotations, tangents, slots, q, h, beta);
                 for (int i = 0; i < n; i++)
@@ -146,6 +138,8 @@ namespace SoftBodyDynamics.Solvers
                     accumulated[i] += change;
                 }
             }
+            if (warmStart.Length == n)
+                accumulated.CopyTo(warmStart);
             return iterations;
         }
 
@@ -177,9 +171,10 @@ namespace SoftBodyDynamics.Solvers
             {
                 FemForces.NeoHookeanEnergyChange(model, x, v, dv, h, step, slots, 0, elements);
                 double elastic = 0.0, magnitude = 0.0;
+                int stride = model.NodesPerElement;
                 for (int e = 0; e < elements; e++)
                 {
-                    double de = slots[4 * e].x;
+                    double de = slots[stride * e].x;
                     elastic += de;
                     magnitude += math.abs(de);
                 }
@@ -204,39 +199,62 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Preconditioned conjugate gradients on (M + c K) dv = r from dv = 0, r the right-hand side with ‖r‖² =
-        /// <paramref name="bb"/>; stops at ‖r‖ ≤ tolerance ‖b‖ (<paramref name="converged"/>), after
-        /// <paramref name="maxIterations"/>, or when pᵀAp ≤ 0. Returns the iterations taken.
+        /// Preconditioned conjugate gradients on A Δv = b, A = M + c K, b in <paramref name="work"/>'s second vector (it becomes
+        /// the residual), Δv (its first) from <paramref name="warmStart"/> when it has one value per node, else from 0; z, p, q
+        /// in its third to fifth, the preconditioner's blocks in its last two (<see cref="FemBlockJacobi"/>). Stops at
+        /// ‖r‖ ≤ tolerance ‖b‖ (<paramref name="converged"/>), after <paramref name="maxIterations"/>, or when pᵀAp ≤ 0.
+        /// Returns the iterations taken; <paramref name="residual"/> = ‖r‖/‖b‖ at the end.
         /// </summary>
         static int ConjugateGradient(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
-            Span<float3> slots, Span<float3> dv, Span<float3> r, Span<float3> z, Span<float3> p, Span<float3> q, float c, float bb,
-            int maxIterations, float tolerance, out bool converged)
+            Span<float3> slots, Span<float3> work, ReadOnlySpan<float3> warmStart, float c, int maxIterations, float tolerance,
+            out bool converged, out float residual)
         {
             int n = model.ParticleCount;
-            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses, k = model.StiffnessDiagonal;
+            Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
+                q = work.Slice(4 * n, n);
+            ReadOnlySpan<float3> blockDiagonal = work.Slice(5 * n, n), blockOffDiagonal = work.Slice(6 * n, n);
+            ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
+            float bb = 0f;
+            for (int i = 0; i < n; i++)
+                bb += math.lengthsq(r[i]);
             converged = true;
+            residual = 0f;
             int iterations = 0;
-            if (bb > 0f && math.isfinite(bb))
+            if (!(bb > 0f && math.isfinite(bb)))
             {
-                float threshold = tolerance * tolerance * bb;
-                float rz = Precondition(r, z, m, k, w, c);
+                dv.Clear();
+                return 0;
+            }
+            float rr = bb;
+            if (warmStart.Length == n)
+            {
+                // r = b − A Δv₀, pinned entries 0 (Δv₀ is 0 there: it was a solution's).
+                for (int i = 0; i < n; i++)
+                    dv[i] = w[i] > 0f && math.all(math.isfinite(warmStart[i])) ? warmStart[i] : float3.zero;
+                Apply(model, neoHookean, rotations, tangents, dv, slots, q, c, m, w);
+                rr = 0f;
+                for (int i = 0; i < n; i++)
+                {
+                    r[i] -= q[i];
+                    rr += math.lengthsq(r[i]);
+                }
+            }
+            else
+                dv.Clear();
+            float threshold = tolerance * tolerance * bb;
+            if (rr > threshold)
+            {
+                float rz = FemBlockJacobi.Apply(blockDiagonal, blockOffDiagonal, r, z);
                 z.CopyTo(p);
                 converged = false;
                 while (iterations < maxIterations)
                 {
                     iterations++;
-                    // q = A p = M p + c K p (the gathered slots hold −K p).
-                    Stiffness(model, neoHookean, rotations, tangents, p, slots, q);
-                    float pq = 0f;
-                    for (int i = 0; i < n; i++)
-                    {
-                        q[i] = w[i] > 0f ? m[i] * p[i] - c * q[i] : float3.zero;
-                        pq += math.dot(p[i], q[i]);
-                    }
+                    float pq = Apply(model, neoHookean, rotations, tangents, p, slots, q, c, m, w);
                     if (!(pq > 0f))
                         break;
                     float a = rz / pq;
-                    float rr = 0f;
+                    rr = 0f;
                     for (int i = 0; i < n; i++)
                     {
                         dv[i] += a * p[i];
@@ -248,14 +266,30 @@ namespace SoftBodyDynamics.Solvers
                         converged = true;
                         break;
                     }
-                    float rzNew = Precondition(r, z, m, k, w, c);
-                    float b = rzNew / rz;
+                    float rzNew = FemBlockJacobi.Apply(blockDiagonal, blockOffDiagonal, r, z);
+                    float beta = rzNew / rz;
                     rz = rzNew;
                     for (int i = 0; i < n; i++)
-                        p[i] = z[i] + b * p[i];
+                        p[i] = z[i] + beta * p[i];
                 }
             }
+            residual = math.sqrt(rr / bb);
             return iterations;
+        }
+
+        /// <summary>q = A u = M u + c K u at the free nodes (0 at pinned ones); returns uᵀA u.</summary>
+        static float Apply(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
+            ReadOnlySpan<float3> u, Span<float3> slots, Span<float3> q, float c, ReadOnlySpan<float> m, ReadOnlySpan<float> w)
+        {
+            // The gathered slots hold −K u.
+            Stiffness(model, neoHookean, rotations, tangents, u, slots, q);
+            float uq = 0f;
+            for (int i = 0; i < q.Length; i++)
+            {
+                q[i] = w[i] > 0f ? m[i] * u[i] - c * q[i] : float3.zero;
+                uq += math.dot(u[i], q[i]);
+            }
+            return uq;
         }
 
         /// <summary>
@@ -279,19 +313,6 @@ namespace SoftBodyDynamics.Solvers
             var mean = new float3((float)(px / mass), (float)(py / mass), (float)(pz / mass));
             for (int i = 0; i < dv.Length; i++)
                 dv[i] -= mean;
-        }
-
-        /// <summary>z = D⁻¹ r with D = mᵢ + c kᵢ (0 at pinned nodes); returns r · z.</summary>
-        static float Precondition(ReadOnlySpan<float3> r, Span<float3> z, ReadOnlySpan<float> m, ReadOnlySpan<float> k,
-            ReadOnlySpan<float> w, float c)
-        {
-            float rz = 0f;
-            for (int i = 0; i < r.Length; i++)
-            {
-                z[i] = w[i] > 0f ? r[i] / (m[i] + c * k[i]) : float3.zero;
-                rz += math.dot(r[i], z[i]);
-            }
-            return rz;
         }
     }
 }

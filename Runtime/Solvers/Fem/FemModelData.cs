@@ -44,10 +44,22 @@ namespace SoftBodyDynamics.Solvers
         public float DampingRatio;
         /// <summary>See <see cref="FemModel.DefaultDampingFrequency"/> (rad/s).</summary>
         public float DefaultDampingFrequency;
+        /// <summary>See <see cref="FemModel.ElementNodes"/> (empty for linear elements).</summary>
+        public int[] ElementNodes = new int[0];
+        /// <summary>See <see cref="FemModel.PointGradients"/> (1/m; empty for linear elements).</summary>
+        public float3[] PointGradients = new float3[0];
+        /// <summary>See <see cref="FemModel.PointVolumes"/> (m³; empty for linear elements).</summary>
+        public float[] PointVolumes = new float[0];
+        /// <summary>Quadratic elements: the two corner nodes of each edge node (edge node k is node <c>CornerCount + k</c>); empty for linear ones. Render vertices skin to them.</summary>
+        public int2[] EdgeEnds = new int2[0];
+
+        /// <summary>The element order of the model.</summary>
+        public FemElementOrder Order => ElementNodes.Length > 0 ? FemElementOrder.Quadratic : FemElementOrder.Linear;
 
         /// <summary>The spans of the model.</summary>
         public FemModel AsModel() => new FemModel(RestPositions, Masses, InverseMasses, Elements, Incidence.Offsets, Incidence.Slots,
-            Coloring.ColorOffsets, Coloring.Elements, StiffnessDiagonal, RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency);
+            Coloring.ColorOffsets, Coloring.Elements, StiffnessDiagonal, RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency,
+            ElementNodes, PointGradients, PointVolumes);
 
         /// <summary>Quality 6√2 V / l_rms³ of a tetrahedron (dimensionless, signed like its volume): 1 = regular.</summary>
         public static float Quality(float3 a, float3 b, float3 c, float3 d)
@@ -63,9 +75,14 @@ namespace SoftBodyDynamics.Solvers
         /// Bakes <paramref name="mesh"/> with <paramref name="material"/>. Lumped masses mᵢ = ρ Σ V_t / 4, inverse masses
         /// (0 where <paramref name="pinned"/> is true; empty = nothing pinned), Dm⁻¹ and volume per tetrahedron, incidence,
         /// colouring, Lamé parameters. Appends issues to <paramref name="issues"/>; returns null when any is an error.
+        /// <para>
+        /// <see cref="FemElementOrder.Quadratic"/>: a node at the midpoint of every edge (<see cref="QuadraticTetrahedra"/>),
+        /// after the mesh's own nodes; an edge node is pinned when both its corners are. Masses are lumped by
+        /// <see cref="QuadraticTet.CornerMassFraction"/> and <see cref="QuadraticTet.EdgeMassFraction"/> (all positive).
+        /// </para>
         /// </summary>
         public static FemModelData Create(TetrahedralMesh mesh, in ElasticMaterial material, ReadOnlySpan<bool> pinned,
-            List<SoftBodyIssue> issues)
+            List<SoftBodyIssue> issues, FemElementOrder order = FemElementOrder.Linear)
         {
             int start = issues.Count;
             if (!material.IsValid)
@@ -120,37 +137,71 @@ namespace SoftBodyDynamics.Solvers
             if (SoftBodyIssue.AnyError(issues, start))
                 return null;
 
+            bool quadratic = order == FemElementOrder.Quadratic;
+            float3[] positions = mesh.Positions;
+            int[] elementNodes = new int[0];
+            int2[] edgeEnds = new int2[0];
+            if (quadratic)
+                QuadraticTetrahedra.Build(mesh, out positions, out elementNodes, out edgeEnds);
+            int nodeCount = positions.Length, tets = mesh.TetrahedronCount, perElement = quadratic ? QuadraticTet.NodeCount : 4;
             var data = new FemModelData
             {
-                RestPositions = (float3[])mesh.Positions.Clone(),
-                Masses = new float[n],
-                InverseMasses = new float[n],
-                Elements = new TetElement[mesh.TetrahedronCount],
-                StiffnessDiagonal = new float[n],
+                RestPositions = (float3[])positions.Clone(),
+                Masses = new float[nodeCount],
+                InverseMasses = new float[nodeCount],
+                Elements = new TetElement[tets],
+                StiffnessDiagonal = new float[nodeCount],
                 Mu = material.LameMu,
                 Lambda = material.LameLambda,
                 DampingRatio = material.DampingRatio,
+                ElementNodes = elementNodes,
+                EdgeEnds = edgeEnds,
+                PointGradients = new float3[quadratic ? QuadraticTet.PointCount * QuadraticTet.NodeCount * tets : 0],
+                PointVolumes = new float[quadratic ? QuadraticTet.PointCount * tets : 0],
             };
-            var corners = new int[4 * mesh.TetrahedronCount];
+            var corners = new int[perElement * tets];
             float diagonalFactor = data.Mu + (data.Mu + data.Lambda) / 3f;
-            for (int t = 0; t < mesh.TetrahedronCount; t++)
+            Span<float3> cornerGradients = stackalloc float3[4];
+            for (int t = 0; t < tets; t++)
             {
-                int4 nodes = mesh.Tetrahedra[t];
-                float3 x0 = mesh.Positions[nodes.x];
-                var dm = new float3x3(mesh.Positions[nodes.y] - x0, mesh.Positions[nodes.z] - x0, mesh.Positions[nodes.w] - x0);
+                int4 tet = mesh.Tetrahedra[t];
+                float3 x0 = mesh.Positions[tet.x];
+                var dm = new float3x3(mesh.Positions[tet.y] - x0, mesh.Positions[tet.z] - x0, mesh.Positions[tet.w] - x0);
                 float volume = math.determinant(dm) / 6f;
                 float3x3 dmInv = math.inverse(dm);
-                data.Elements[t] = new TetElement { Nodes = nodes, InverseRestShape = dmInv, RestVolume = volume };
+                data.Elements[t] = new TetElement { Nodes = tet, InverseRestShape = dmInv, RestVolume = volume };
                 // Shape-function gradients: ∇N₁..₃ = rows of Dm⁻¹, ∇N₀ = −Σ.
                 float3x3 g = math.transpose(dmInv);
-                float3 g0 = -(g.c0 + g.c1 + g.c2);
-                float quarter = material.Density * volume / 4f;
-                for (int k = 0; k < 4; k++)
+                cornerGradients[0] = -(g.c0 + g.c1 + g.c2);
+                cornerGradients[1] = g.c0;
+                cornerGradients[2] = g.c1;
+                cornerGradients[3] = g.c2;
+                float mass = material.Density * volume;
+                if (!quadratic)
                 {
-                    corners[4 * t + k] = nodes[k];
-                    data.Masses[nodes[k]] += quarter;
-                    float3 gk = k == 0 ? g0 : g[k - 1];
-                    data.StiffnessDiagonal[nodes[k]] += volume * diagonalFactor * math.lengthsq(gk);
+                    for (int k = 0; k < 4; k++)
+                    {
+                        corners[4 * t + k] = tet[k];
+                        data.Masses[tet[k]] += mass / 4f;
+                        data.StiffnessDiagonal[tet[k]] += volume * diagonalFactor * math.lengthsq(cornerGradients[k]);
+                    }
+                    continue;
+                }
+                for (int a = 0; a < QuadraticTet.NodeCount; a++)
+                {
+                    int node = elementNodes[QuadraticTet.NodeCount * t + a];
+                    corners[QuadraticTet.NodeCount * t + a] = node;
+                    data.Masses[node] += mass * (a < 4 ? QuadraticTet.CornerMassFraction : QuadraticTet.EdgeMassFraction);
+                }
+                for (int q = 0; q < QuadraticTet.PointCount; q++)
+                {
+                    int point = QuadraticTet.PointCount * t + q;
+                    Span<float3> gq = data.PointGradients.AsSpan(QuadraticTet.NodeCount * point, QuadraticTet.NodeCount);
+                    QuadraticTet.Gradients(q, cornerGradients, gq);
+                    float pointVolume = volume / QuadraticTet.PointCount;
+                    data.PointVolumes[point] = pointVolume;
+                    for (int a = 0; a < QuadraticTet.NodeCount; a++)
+                        data.StiffnessDiagonal[elementNodes[QuadraticTet.NodeCount * t + a]] += pointVolume * diagonalFactor * math.lengthsq(gq[a]);
                 }
             }
             float massSum = 0f;
@@ -163,25 +214,28 @@ namespace SoftBodyDynamics.Solvers
                 }
             float meanMass = massSum / massCount;
             float3 center = float3.zero;
-            float3 lo = mesh.Positions[0], hi = mesh.Positions[0];
-            for (int i = 0; i < n; i++)
+            float3 lo = positions[0], hi = positions[0];
+            for (int i = 0; i < nodeCount; i++)
             {
-                // An unused node gets the mean mass (the shared step needs mᵢ > 0) and is pinned.
-                if (!used[i])
+                // An unused node gets the mean mass (the shared step needs mᵢ > 0) and is pinned; an edge node is pinned with both its corners.
+                bool unused = i < n && !used[i];
+                if (unused)
                     data.Masses[i] = meanMass;
-                bool pin = !used[i] || (pinned.Length == n && pinned[i]);
+                bool pin = unused || (pinned.Length == n && (i < n
+                    ? pinned[i]
+                    : pinned[edgeEnds[i - n].x] && pinned[edgeEnds[i - n].y]));
                 data.InverseMasses[i] = pin ? 0f : 1f / data.Masses[i];
-                center += data.Masses[i] * mesh.Positions[i];
-                lo = math.min(lo, mesh.Positions[i]);
-                hi = math.max(hi, mesh.Positions[i]);
+                center += data.Masses[i] * positions[i];
+                lo = math.min(lo, positions[i]);
+                hi = math.max(hi, positions[i]);
             }
             float totalMass = 0f;
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < nodeCount; i++)
                 totalMass += data.Masses[i];
             data.RestCenter = center / totalMass;
             data.DefaultDampingFrequency = DefaultReferenceFrequency(material, math.cmax(hi - lo));
-            data.Incidence = ElementIncidence.Build(corners, 4, n);
-            data.Coloring = GraphColoring.Build(corners, 4, n);
+            data.Incidence = ElementIncidence.Build(corners, perElement, nodeCount);
+            data.Coloring = GraphColoring.Build(corners, perElement, nodeCount);
             return data;
         }
 

@@ -25,7 +25,11 @@ namespace SoftBodyDynamics.Solvers
         readonly float3* m_Slots;
         readonly float3* m_Multipliers;
         readonly float3* m_Tangents;
-        readonly int m_ParticleCount, m_ElementCount, m_ColorCount;
+        readonly float3* m_WarmStart;
+        readonly int* m_ElementNodes;
+        readonly float3* m_PointGradients;
+        readonly float* m_PointVolumes;
+        readonly int m_ParticleCount, m_ElementCount, m_ColorCount, m_ElementNodeCount, m_PointCount, m_SlotCount, m_WarmStartCount;
         readonly float3 m_RestCenter;
         readonly float m_Mu, m_Lambda, m_DampingRatio, m_DefaultDampingFrequency;
         readonly FemParameters m_Parameters;
@@ -36,15 +40,26 @@ namespace SoftBodyDynamics.Solvers
         public int MaxCgIterations;
         /// <summary>Every implicit substep of the step converged.</summary>
         public bool CgConverged;
+        /// <summary>The largest relative residual ‖r‖/‖b‖ any implicit substep's CG solve ended at.</summary>
+        public float MaxCgResidual;
         /// <summary>Elements with det F ≤ 0 at the start of the last substep (explicit and implicit).</summary>
         public int InvertedElements;
 
         /// <summary>The stage over pinned arrays; see <see cref="FemSolver.Step"/> for how they are obtained.</summary>
         public FemSolveStage(float3* rest, float* masses, float* inverseMasses, TetElement* elements, int* incidenceOffsets,
             int* incidenceSlots, int* colorOffsets, int* colorElements, float* stiffnessDiagonal, quaternion* rotations,
-            float3* work, float3* slots, float3* multipliers, float3* tangents, in FemModel model, in FemParameters sanitizedParameters,
+            float3* work, float3* slots, float3* multipliers, float3* tangents, float3* warmStart, int* elementNodes,
+            float3* pointGradients, float* pointVolumes, in FemModel model, in FemState state, in FemParameters sanitizedParameters,
             FemIntegrator integrator, float beta)
         {
+            m_WarmStart = warmStart;
+            m_WarmStartCount = state.WarmStart.Length == model.ParticleCount ? model.ParticleCount : 0;
+            m_ElementNodes = elementNodes;
+            m_PointGradients = pointGradients;
+            m_PointVolumes = pointVolumes;
+            m_ElementNodeCount = model.ElementNodes.Length;
+            m_PointCount = model.PointCount;
+            m_SlotCount = model.SlotCount;
             m_Rest = rest;
             m_Masses = masses;
             m_InverseMasses = inverseMasses;
@@ -72,17 +87,22 @@ namespace SoftBodyDynamics.Solvers
             m_Beta = beta;
             MaxCgIterations = 0;
             CgConverged = true;
+            MaxCgResidual = 0f;
             InvertedElements = 0;
         }
 
         FemModel Model => new FemModel(new ReadOnlySpan<float3>(m_Rest, m_ParticleCount), new ReadOnlySpan<float>(m_Masses, m_ParticleCount),
             new ReadOnlySpan<float>(m_InverseMasses, m_ParticleCount), new ReadOnlySpan<TetElement>(m_Elements, m_ElementCount),
-            new ReadOnlySpan<int>(m_IncidenceOffsets, m_ParticleCount + 1), new ReadOnlySpan<int>(m_IncidenceSlots, 4 * m_ElementCount),
+            new ReadOnlySpan<int>(m_IncidenceOffsets, m_ParticleCount + 1), new ReadOnlySpan<int>(m_IncidenceSlots, m_SlotCount),
             new ReadOnlySpan<int>(m_ColorOffsets, m_ColorCount + 1), new ReadOnlySpan<int>(m_ColorElements, m_ElementCount),
             new ReadOnlySpan<float>(m_StiffnessDiagonal, m_ParticleCount), m_RestCenter, m_Mu, m_Lambda, m_DampingRatio,
-            m_DefaultDampingFrequency);
+            m_DefaultDampingFrequency, new ReadOnlySpan<int>(m_ElementNodes, m_ElementNodeCount),
+            new ReadOnlySpan<float3>(m_PointGradients, m_ElementNodeCount == 0 ? 0 : QuadraticTet.NodeCount * m_PointCount),
+            new ReadOnlySpan<float>(m_PointVolumes, m_ElementNodeCount == 0 ? 0 : m_PointCount));
 
-        Span<quaternion> Rotations => new Span<quaternion>(m_Rotations, m_ElementCount);
+        Span<quaternion> Rotations => new Span<quaternion>(m_Rotations, m_PointCount);
+
+        Span<float3> WarmStart => new Span<float3>(m_WarmStart, m_WarmStartCount);
 
         /// <inheritdoc/>
         public void Solve(in ParticleBody body, in ParticleStepConstants constants, in RigidFrame frame, bool lastSubstep)
@@ -91,7 +111,7 @@ namespace SoftBodyDynamics.Solvers
             float h = constants.H;
             var x = body.Positions;
             var v = body.Velocities;
-            var slots = new Span<float3>(m_Slots, 4 * m_ElementCount);
+            var slots = new Span<float3>(m_Slots, m_SlotCount);
             ReadOnlySpan<float> w = model.InverseMasses;
             // Pinned nodes arrive at rest: the shared step zeroes their velocity before the solve (FemSolver.Body passes
             // the inverse masses), so no spurious velocity reaches the damping or the implicit system's K v.
@@ -101,14 +121,15 @@ namespace SoftBodyDynamics.Solvers
                 {
                     // Neo-Hookean only: the element tangents (the co-rotational model keeps its stiffness in the rotations).
                     var tangents = m_Parameters.Model == FemMaterialModel.NeoHookean
-                        ? new Span<float3>(m_Tangents, NeoHookeanTangent.Float3Count * m_ElementCount)
+                        ? new Span<float3>(m_Tangents, NeoHookeanTangent.Float3Count * m_PointCount)
                         : default;
                     int iterations = FemImplicitEuler.Solve(model, m_Parameters.Model, x, v, Rotations, tangents, m_Parameters.RotationIterations,
-                        slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), h, m_Beta,
+                        slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), WarmStart, h, m_Beta,
                         m_Parameters.NewtonIterations, m_Parameters.CgIterations, m_Parameters.CgTolerance, out bool converged,
-                        out InvertedElements);
+                        out float residual, out InvertedElements);
                     MaxCgIterations = math.max(MaxCgIterations, iterations);
                     CgConverged &= converged;
+                    MaxCgResidual = math.max(MaxCgResidual, residual);
                     break;
                 }
                 case FemIntegrator.Xpbd:
@@ -141,10 +162,11 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
-        /// <summary>The body is back at its rest shape rotated by <paramref name="rotation"/>: every element's rotation restarts there.</summary>
+        /// <summary>The body is back at its rest shape rotated by <paramref name="rotation"/>: every point's rotation restarts there, the warm start at 0.</summary>
         public void OnReset(quaternion rotation)
         {
             Rotations.Fill(rotation);
+            WarmStart.Clear();
         }
     }
 }

@@ -4,7 +4,7 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// One step of a finite-element body: linear tetrahedra with a co-rotational or stable Neo-Hookean material
+    /// One step of a finite-element body: linear or quadratic tetrahedra with a co-rotational or stable Neo-Hookean material
     /// (<see cref="FemMaterialModel"/>), advanced by symplectic Euler, implicit Euler or XPBD (<see cref="FemIntegrator"/>)
     /// as the solve stage (<see cref="FemSolveStage"/>) of the shared particle step (<see cref="ParticleBodyStep"/>:
     /// guard, wake and sleep, substeps of predict / solve / collide / update, placement, origin). Damping is the
@@ -19,6 +19,7 @@ namespace SoftBodyDynamics.Solvers
         {
             ParticleBodyStep.Place(Body(model, state), position, rotation, velocity, out status);
             state.Rotations.Fill(status.Rotation);
+            state.WarmStart.Clear();
         }
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
@@ -32,6 +33,20 @@ namespace SoftBodyDynamics.Solvers
         {
             fallback = p.Integrator == FemIntegrator.Xpbd && p.Model != FemMaterialModel.NeoHookean;
             return fallback ? FemIntegrator.SymplecticEuler : p.Integrator;
+        }
+
+        /// <summary>
+        /// <see cref="EffectiveIntegrator(in FemParameters, out bool)"/> for <paramref name="model"/>: XPBD's constraints are per
+        /// linear tetrahedron, so quadratic elements run implicit Euler instead and set <paramref name="fallback"/>.
+        /// </summary>
+        public static FemIntegrator EffectiveIntegrator(in FemModel model, in FemParameters p, out bool fallback)
+        {
+            if (model.IsQuadratic && p.Integrator == FemIntegrator.Xpbd)
+            {
+                fallback = true;
+                return FemIntegrator.ImplicitEuler;
+            }
+            return EffectiveIntegrator(p, out fallback);
         }
 
         /// <summary>Reference frequency ω_ref (rad/s): <see cref="FemParameters.DampingFrequency"/>, or the model's estimate when 0.</summary>
@@ -59,7 +74,7 @@ namespace SoftBodyDynamics.Solvers
             float dt, in FemState state, ref SoftBodyStatus status)
         {
             FemParameters p = parameters.Sanitized();
-            FemIntegrator integrator = EffectiveIntegrator(p, out bool fallback);
+            FemIntegrator integrator = EffectiveIntegrator(model, p, out bool fallback);
             var report = new FemStepReport { Step = new ParticleStepReport { BadParticle = -1 }, Integrator = integrator,
                 IntegratorFallback = fallback, CgConverged = true };
             if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
@@ -81,12 +96,18 @@ namespace SoftBodyDynamics.Solvers
             fixed (float3* slots = state.Slots)
             fixed (float3* multipliers = state.Multipliers)
             fixed (float3* tangents = state.Tangents)
+            fixed (float3* warmStart = state.WarmStart)
+            fixed (int* elementNodes = model.ElementNodes)
+            fixed (float3* pointGradients = model.PointGradients)
+            fixed (float* pointVolumes = model.PointVolumes)
             {
                 var stage = new FemSolveStage(rest, masses, inverseMasses, elements, incidenceOffsets, incidenceSlots, colorOffsets,
-                    colorElements, stiffness, rotations, work, slots, multipliers, tangents, model, p, integrator, beta);
+                    colorElements, stiffness, rotations, work, slots, multipliers, tangents, warmStart, elementNodes, pointGradients,
+                    pointVolumes, model, state, p, integrator, beta);
                 report.Step = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
                 report.MaxCgIterations = stage.MaxCgIterations;
                 report.CgConverged = stage.CgConverged;
+                report.MaxCgResidual = stage.MaxCgResidual;
                 report.InvertedElements = stage.InvertedElements;
             }
             return report;

@@ -22,8 +22,8 @@ namespace SoftBodyDynamics.Solvers
             int n = model.ParticleCount;
             var x = new float3[n];
             var y = new float3[n];
-            var slots = new float3[4 * model.ElementCount];
-            var rotations = new quaternion[model.ElementCount];
+            var slots = new float3[model.SlotCount];
+            var rotations = new quaternion[model.PointCount];
             Array.Fill(rotations, quaternion.identity);
             var random = new System.Random(12345);
             for (int i = 0; i < n; i++)

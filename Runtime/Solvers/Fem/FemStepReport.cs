@@ -13,6 +13,8 @@ namespace SoftBodyDynamics.Solvers
         public int MaxCgIterations;
         /// <summary>Every implicit substep reached the CG tolerance (true when none ran).</summary>
         public bool CgConverged;
+        /// <summary>The largest relative residual ‖b − A Δv‖/‖b‖ any implicit substep's CG solve ended at (0 when none ran).</summary>
+        public float MaxCgResidual;
         /// <summary>Elements with det F ≤ 0 in the last substep (explicit and implicit only; counted before the update).</summary>
         public int InvertedElements;
     }
