@@ -53,13 +53,23 @@ namespace SoftBodyDynamics.Solvers
         public readonly ReadOnlySpan<float3> PointGradients;
         /// <summary>Quadratic elements: per integration point its quadrature weight times the rest volume (m³). Empty for linear ones.</summary>
         public readonly ReadOnlySpan<float> PointVolumes;
+        /// <summary><see cref="FemRestFactor"/>: free nodes in factor order (rank → node). Empty = no factor (block-Jacobi preconditioning).</summary>
+        public readonly ReadOnlySpan<int> FactorNodes;
+        /// <summary><see cref="FemRestFactor"/>: start of each factor row's envelope in <see cref="FactorValues"/> (3 rows per free node, plus one).</summary>
+        public readonly ReadOnlySpan<int> FactorRowStarts;
+        /// <summary><see cref="FemRestFactor"/>: the Cholesky factor L of M + c₀ K₀, row envelopes.</summary>
+        public readonly ReadOnlySpan<float> FactorValues;
 
         public FemModel(ReadOnlySpan<float3> restPositions, ReadOnlySpan<float> masses, ReadOnlySpan<float> inverseMasses,
             ReadOnlySpan<TetElement> elements, ReadOnlySpan<int> incidenceOffsets, ReadOnlySpan<int> incidenceSlots,
             ReadOnlySpan<int> colorOffsets, ReadOnlySpan<int> colorElements, ReadOnlySpan<float> stiffnessDiagonal,
             float3 restCenter, float mu, float lambda, float dampingRatio, float defaultDampingFrequency,
-            ReadOnlySpan<int> elementNodes = default, ReadOnlySpan<float3> pointGradients = default, ReadOnlySpan<float> pointVolumes = default)
+            ReadOnlySpan<int> elementNodes = default, ReadOnlySpan<float3> pointGradients = default, ReadOnlySpan<float> pointVolumes = default,
+            ReadOnlySpan<int> factorNodes = default, ReadOnlySpan<int> factorRowStarts = default, ReadOnlySpan<float> factorValues = default)
         {
+            FactorNodes = factorNodes;
+            FactorRowStarts = factorRowStarts;
+            FactorValues = factorValues;
             ElementNodes = elementNodes;
             PointGradients = pointGradients;
             PointVolumes = pointVolumes;
@@ -83,6 +93,8 @@ namespace SoftBodyDynamics.Solvers
         public int ParticleCount => RestPositions.Length;
         /// <summary>Number of tetrahedra.</summary>
         public int ElementCount => Elements.Length;
+        /// <summary>True when the model holds a <see cref="FemRestFactor"/> (the implicit step's preconditioner).</summary>
+        public bool HasRestFactor => FactorValues.Length > 0;
         /// <summary>True for quadratic (10-node) elements.</summary>
         public bool IsQuadratic => ElementNodes.Length > 0;
         /// <summary>Nodes (slots) per element: 4 or 10.</summary>

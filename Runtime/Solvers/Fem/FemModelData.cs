@@ -53,13 +53,46 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Quadratic elements: the two corner nodes of each edge node (edge node k is node <c>CornerCount + k</c>); empty for linear ones. Render vertices skin to them.</summary>
         public int2[] EdgeEnds = new int2[0];
 
+        /// <summary>See <see cref="FemModel.FactorNodes"/> (empty until <see cref="BuildRestFactor"/>).</summary>
+        public int[] FactorNodes = new int[0];
+        /// <summary>See <see cref="FemModel.FactorRowStarts"/>.</summary>
+        public int[] FactorRowStarts = new int[0];
+        /// <summary>See <see cref="FemModel.FactorValues"/>.</summary>
+        public float[] FactorValues = new float[0];
+        /// <summary>The c₀ = hβ + h² (s²) the factor was built for; 0 = none.</summary>
+        public float FactorC;
+
+        /// <summary>
+        /// Builds the <see cref="FemRestFactor"/> preconditioner for substeps of <paramref name="substep"/> seconds and Rayleigh
+        /// coefficient <paramref name="beta"/> (s): c₀ = hβ + h². The implicit step uses it at any h (fewer iterations the
+        /// closer h is). Returns false (and keeps block-Jacobi) when the rest system is not positive definite. Memory: the
+        /// envelope of the free nodes' rows in reverse Cuthill–McKee order (about 3 × bandwidth floats per row).
+        /// </summary>
+        public bool BuildRestFactor(float substep, float beta)
+        {
+            float c = substep * beta + substep * substep;
+            if (!(c > 0f) || !math.isfinite(c) || !FemRestFactor.Build(AsModel(), c, out int[] nodes, out int[] starts, out float[] values))
+            {
+                FactorNodes = new int[0];
+                FactorRowStarts = new int[0];
+                FactorValues = new float[0];
+                FactorC = 0f;
+                return false;
+            }
+            FactorNodes = nodes;
+            FactorRowStarts = starts;
+            FactorValues = values;
+            FactorC = c;
+            return true;
+        }
+
         /// <summary>The element order of the model.</summary>
         public FemElementOrder Order => ElementNodes.Length > 0 ? FemElementOrder.Quadratic : FemElementOrder.Linear;
 
         /// <summary>The spans of the model.</summary>
         public FemModel AsModel() => new FemModel(RestPositions, Masses, InverseMasses, Elements, Incidence.Offsets, Incidence.Slots,
             Coloring.ColorOffsets, Coloring.Elements, StiffnessDiagonal, RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency,
-            ElementNodes, PointGradients, PointVolumes);
+            ElementNodes, PointGradients, PointVolumes, FactorNodes, FactorRowStarts, FactorValues);
 
         /// <summary>Quality 6√2 V / l_rms³ of a tetrahedron (dimensionless, signed like its volume): 1 = regular.</summary>
         public static float Quality(float3 a, float3 b, float3 c, float3 d)

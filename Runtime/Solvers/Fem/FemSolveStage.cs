@@ -29,6 +29,10 @@ namespace SoftBodyDynamics.Solvers
         readonly int* m_ElementNodes;
         readonly float3* m_PointGradients;
         readonly float* m_PointVolumes;
+        readonly int* m_FactorNodes;
+        readonly int* m_FactorRowStarts;
+        readonly float* m_FactorValues;
+        readonly int m_FactorNodeCount, m_FactorValueCount;
         readonly int m_ParticleCount, m_ElementCount, m_ColorCount, m_ElementNodeCount, m_PointCount, m_SlotCount, m_WarmStartCount;
         readonly float3 m_RestCenter;
         readonly float m_Mu, m_Lambda, m_DampingRatio, m_DefaultDampingFrequency;
@@ -38,6 +42,8 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>Most CG iterations of any implicit substep of the step.</summary>
         public int MaxCgIterations;
+        /// <summary>CG iterations of the step's implicit substeps, summed.</summary>
+        public int TotalCgIterations;
         /// <summary>Every implicit substep of the step converged.</summary>
         public bool CgConverged;
         /// <summary>The largest relative residual ‖r‖/‖b‖ any implicit substep's CG solve ended at.</summary>
@@ -49,9 +55,14 @@ namespace SoftBodyDynamics.Solvers
         public FemSolveStage(float3* rest, float* masses, float* inverseMasses, TetElement* elements, int* incidenceOffsets,
             int* incidenceSlots, int* colorOffsets, int* colorElements, float* stiffnessDiagonal, quaternion* rotations,
             float3* work, float3* slots, float3* multipliers, float3* tangents, float3* warmStart, int* elementNodes,
-            float3* pointGradients, float* pointVolumes, in FemModel model, in FemState state, in FemParameters sanitizedParameters,
-            FemIntegrator integrator, float beta)
+            float3* pointGradients, float* pointVolumes, int* factorNodes, int* factorRowStarts, float* factorValues, in FemModel model,
+            in FemState state, in FemParameters sanitizedParameters, FemIntegrator integrator, float beta)
         {
+            m_FactorNodes = factorNodes;
+            m_FactorRowStarts = factorRowStarts;
+            m_FactorValues = factorValues;
+            m_FactorNodeCount = model.FactorNodes.Length;
+            m_FactorValueCount = model.FactorValues.Length;
             m_WarmStart = warmStart;
             m_WarmStartCount = state.WarmStart.Length == model.ParticleCount ? model.ParticleCount : 0;
             m_ElementNodes = elementNodes;
@@ -86,6 +97,7 @@ namespace SoftBodyDynamics.Solvers
             m_Integrator = integrator;
             m_Beta = beta;
             MaxCgIterations = 0;
+            TotalCgIterations = 0;
             CgConverged = true;
             MaxCgResidual = 0f;
             InvertedElements = 0;
@@ -98,7 +110,9 @@ namespace SoftBodyDynamics.Solvers
             new ReadOnlySpan<float>(m_StiffnessDiagonal, m_ParticleCount), m_RestCenter, m_Mu, m_Lambda, m_DampingRatio,
             m_DefaultDampingFrequency, new ReadOnlySpan<int>(m_ElementNodes, m_ElementNodeCount),
             new ReadOnlySpan<float3>(m_PointGradients, m_ElementNodeCount == 0 ? 0 : QuadraticTet.NodeCount * m_PointCount),
-            new ReadOnlySpan<float>(m_PointVolumes, m_ElementNodeCount == 0 ? 0 : m_PointCount));
+            new ReadOnlySpan<float>(m_PointVolumes, m_ElementNodeCount == 0 ? 0 : m_PointCount),
+            new ReadOnlySpan<int>(m_FactorNodes, m_FactorNodeCount), new ReadOnlySpan<int>(m_FactorRowStarts, m_FactorValueCount == 0 ? 0 : 3 * m_FactorNodeCount + 1),
+            new ReadOnlySpan<float>(m_FactorValues, m_FactorValueCount));
 
         Span<quaternion> Rotations => new Span<quaternion>(m_Rotations, m_PointCount);
 
@@ -128,6 +142,7 @@ namespace SoftBodyDynamics.Solvers
                         m_Parameters.NewtonIterations, m_Parameters.CgIterations, m_Parameters.CgTolerance, out bool converged,
                         out float residual, out InvertedElements);
                     MaxCgIterations = math.max(MaxCgIterations, iterations);
+                    TotalCgIterations += iterations;
                     CgConverged &= converged;
                     MaxCgResidual = math.max(MaxCgResidual, residual);
                     break;

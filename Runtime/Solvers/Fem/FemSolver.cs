@@ -100,12 +100,16 @@ namespace SoftBodyDynamics.Solvers
             fixed (int* elementNodes = model.ElementNodes)
             fixed (float3* pointGradients = model.PointGradients)
             fixed (float* pointVolumes = model.PointVolumes)
+            fixed (int* factorNodes = model.FactorNodes)
+            fixed (int* factorRowStarts = model.FactorRowStarts)
+            fixed (float* factorValues = model.FactorValues)
             {
                 var stage = new FemSolveStage(rest, masses, inverseMasses, elements, incidenceOffsets, incidenceSlots, colorOffsets,
                     colorElements, stiffness, rotations, work, slots, multipliers, tangents, warmStart, elementNodes, pointGradients,
-                    pointVolumes, model, state, p, integrator, beta);
+                    pointVolumes, factorNodes, factorRowStarts, factorValues, model, state, p, integrator, beta);
                 report.Step = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
                 report.MaxCgIterations = stage.MaxCgIterations;
+                report.TotalCgIterations = stage.TotalCgIterations;
                 report.CgConverged = stage.CgConverged;
                 report.MaxCgResidual = stage.MaxCgResidual;
                 report.InvertedElements = stage.InvertedElements;

@@ -37,7 +37,8 @@ namespace SoftBodyDynamics.Solvers
         public readonly Span<float3> Tangents;
         /// <summary>
         /// Kept between steps, optional: per node the last implicit substep's velocity change Δv (m/s), the first guess of the
-        /// next conjugate-gradient solve. Empty = every solve starts from 0 (the same solution to the tolerance, more iterations).
+        /// next conjugate-gradient solve when the model has a <see cref="FemRestFactor"/>. Empty = every solve starts from 0
+        /// (the same solution to the tolerance, more iterations).
         /// </summary>
         public readonly Span<float3> WarmStart;
 

@@ -11,6 +11,8 @@ namespace SoftBodyDynamics.Solvers
         public bool IntegratorFallback;
         /// <summary>Most conjugate-gradient iterations any implicit substep took (summed over its Newton iterations).</summary>
         public int MaxCgIterations;
+        /// <summary>Conjugate-gradient iterations of all implicit substeps of the step, summed.</summary>
+        public int TotalCgIterations;
         /// <summary>Every implicit substep reached the CG tolerance (true when none ran).</summary>
         public bool CgConverged;
         /// <summary>The largest relative residual ‖b − A Δv‖/‖b‖ any implicit substep's CG solve ended at (0 when none ran).</summary>

@@ -15,10 +15,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         public static TetrahedralMesh Box(int nx, int ny, int nz, float3 size) => BoxTetrahedra.Create(size, new int3(nx, ny, nz), 0.5f * size);
 
         /// <summary>Bakes <paramref name="mesh"/>; throws when baking reports an error.</summary>
-        public static FemModelData Bake(TetrahedralMesh mesh, ElasticMaterial material, bool[] pinned = null)
+        public static FemModelData Bake(TetrahedralMesh mesh, ElasticMaterial material, bool[] pinned = null,
+            FemElementOrder order = FemElementOrder.Linear)
         {
             var issues = new List<SoftBodyIssue>();
-            FemModelData data = FemModelData.Create(mesh, material, pinned ?? Array.Empty<bool>(), issues);
+            FemModelData data = FemModelData.Create(mesh, material, pinned ?? Array.Empty<bool>(), issues, order);
             if (data == null)
                 throw new InvalidOperationException("Bake failed: " + string.Join("; ", issues));
             return data;
@@ -30,24 +31,26 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         public readonly FemModelData Data;
         public FemParameters Parameters;
-        public readonly float3[] Positions, Velocities, ParticleScratch, ElementScratch;
+        public readonly float3[] Positions, Velocities, ParticleScratch, ElementScratch, WarmStart;
         public readonly quaternion[] Rotations;
         public SoftBodyStatus Status;
 
-        public FemTestBody(FemModelData data, FemParameters parameters, float3 position = default)
+        /// <param name="warmStart">Keep the last implicit substep's Δv as the next solve's first guess (<see cref="FemState.WarmStart"/>).</param>
+        public FemTestBody(FemModelData data, FemParameters parameters, float3 position = default, bool warmStart = true)
         {
             Data = data;
             Parameters = parameters;
-            int n = data.RestPositions.Length, e = data.Elements.Length;
+            int n = data.RestPositions.Length, points = data.AsModel().PointCount;
             Positions = new float3[n];
             Velocities = new float3[n];
             ParticleScratch = new float3[FemState.ScratchPerParticle * n];
-            ElementScratch = new float3[FemState.ScratchPerElement * e];
-            Rotations = new quaternion[e];
+            ElementScratch = new float3[FemState.ScratchPerElement * points];
+            Rotations = new quaternion[points];
+            WarmStart = warmStart ? new float3[n] : Array.Empty<float3>();
             FemSolver.Initialize(Data.AsModel(), State, position, quaternion.identity, float3.zero, out Status);
         }
 
-        public FemState State => FemState.FromScratch(Positions, Velocities, Rotations, ParticleScratch, ElementScratch);
+        public FemState State => FemState.FromScratch(Positions, Velocities, Rotations, ParticleScratch, ElementScratch, WarmStart);
 
         public FemStepReport Step(float dt, ColliderShape[] colliders = null) =>
             FemSolver.Step(Data.AsModel(), Parameters, colliders ?? Array.Empty<ColliderShape>(), dt, State, ref Status);

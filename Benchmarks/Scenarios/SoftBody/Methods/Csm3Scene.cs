@@ -161,7 +161,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 new Metric(FrequencyValue, diverged ? double.NaN : frequency, MetricUnit.Hertz),
                 new Metric(SidewaysValue, diverged ? double.NaN : sideways, MetricUnit.Metre),
                 new Metric(Resets, resets, MetricUnit.Count),
-                new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count),
+                new Metric(Particles, body.ParticleCount, MetricUnit.Count),
             };
         }
 

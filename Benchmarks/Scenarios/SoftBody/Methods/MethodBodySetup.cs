@@ -19,6 +19,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public float Friction = 0.5f;
         /// <summary>Characteristic length L of the body for the shape-matching calibration (m; see <see cref="ShapeMatchingCalibration"/>).</summary>
         public float CalibrationLength;
+        /// <summary>
+        /// Angular frequency (rad/s) of the mode the material's damping ratio ζ refers to, for methods whose damping is set at a
+        /// reference frequency (FEM's Rayleigh β = 2ζ/ω_ref); 0 = the method's own estimate.
+        /// </summary>
+        public float DampingFrequency;
 
         /// <summary>Lumped masses mᵢ = Σ ρ V_t / 4 over the tetrahedra t that hold node i (kg).</summary>
         public float[] LumpedMasses()
@@ -51,7 +56,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public MethodBodySetup With(ElasticMaterial material) => new MethodBodySetup
         {
             Mesh = Mesh, Material = material, Pinned = Pinned, ParticleRadius = ParticleRadius, Friction = Friction,
-            CalibrationLength = CalibrationLength,
+            CalibrationLength = CalibrationLength, DampingFrequency = DampingFrequency,
         };
+
+        /// <summary>A copy with another material whose ζ refers to the mode at <paramref name="dampingFrequency"/> (rad/s).</summary>
+        public MethodBodySetup With(ElasticMaterial material, float dampingFrequency)
+        {
+            MethodBodySetup copy = With(material);
+            copy.DampingFrequency = dampingFrequency;
+            return copy;
+        }
     }
 }

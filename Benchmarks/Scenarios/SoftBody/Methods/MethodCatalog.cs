@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
@@ -53,6 +54,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>XPBD iterations per substep of the resolution-swept Neo-Hookean XPBD (with 64 substeps: 256 projections per step).</summary>
         const int XpbdIterations = 4;
 
+        /// <summary>Cells across swept by the quadratic-element FEM variants.</summary>
+        static readonly int[] s_QuadraticResolutions = { 1, 2, 3, 4 };
+
+        static int QuadraticParticles(MethodBodySetup setup)
+        {
+            QuadraticTetrahedra.Build(setup.Mesh, out float3[] positions, out _, out _);
+            return positions.Length;
+        }
+
         /// <summary>The variants in report order.</summary>
         public static IReadOnlyList<MethodVariant> Variants { get; } = new List<MethodVariant>
         {
@@ -76,9 +86,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodVariant("FEM co-rotational implicit", "substeps", new[] { 1 }, new[] { 1 },
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_Resolutions, standardMaxResolution: StandardFemResolution),
+            new MethodVariant(FemMethodBody.FamilyName(FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, FemElementOrder.Quadratic),
+                "substeps", new[] { 1, 2 }, new[] { 1 },
+                (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
+                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions, particleCount: QuadraticParticles),
             new MethodVariant("FEM Neo-Hookean implicit", "substeps", new[] { 1 }, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_NeoHookeanImplicitResolutions, standardMaxResolution: StandardFemResolution),
+            new MethodVariant(FemMethodBody.FamilyName(FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, FemElementOrder.Quadratic),
+                "substeps", new[] { 2 }, new int[0],
+                (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
+                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions, particleCount: QuadraticParticles),
             new MethodVariant("FEM Neo-Hookean explicit", "substeps", s_ExplicitFemKnobs, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.SymplecticEuler, k)),
             new MethodVariant("FEM Neo-Hookean XPBD", "substeps", new[] { 64 }, new int[0],

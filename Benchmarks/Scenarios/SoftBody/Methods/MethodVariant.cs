@@ -22,10 +22,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public readonly int StandardMaxResolution;
         /// <summary>Builds a body of the setup with a knob value; the cell size (m) sizes shape matching's clusters.</summary>
         public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
+        /// <summary>Particles of a body of the setup (the mesh's nodes unless the method adds its own, as quadratic elements do).</summary>
+        public readonly Func<MethodBodySetup, int> ParticleCount;
 
         public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create,
-            int[] resolutions = null, int standardMaxResolution = 0)
+            int[] resolutions = null, int standardMaxResolution = 0, Func<MethodBodySetup, int> particleCount = null)
         {
+            ParticleCount = particleCount ?? (s => s.Mesh.NodeCount);
             StandardMaxResolution = standardMaxResolution;
             Family = family;
             KnobUnit = knobUnit;

@@ -187,7 +187,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 new Metric(OvershootMetric, diverged ? double.NaN : overshoot, MetricUnit.Dimensionless),
                 new Metric(Recovered, recovered ? 1 : 0, MetricUnit.Flag),
                 new Metric(Resets, body.Resets, MetricUnit.Count),
-                new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count),
+                new Metric(Particles, body.ParticleCount, MetricUnit.Count),
             };
         }
     }

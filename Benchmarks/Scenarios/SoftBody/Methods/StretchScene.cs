@@ -186,7 +186,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int k = 0; k < Loads.Length; k++)
                 metrics.Add(new Metric(LevelExtension(k), extensions[k], MetricUnit.Metre));
             metrics.Add(new Metric(Resets, resets, MetricUnit.Count));
-            metrics.Add(new Metric(Particles, setup.Mesh.NodeCount, MetricUnit.Count));
+            metrics.Add(new Metric(Particles, body.ParticleCount, MetricUnit.Count));
             return metrics;
         }
 
