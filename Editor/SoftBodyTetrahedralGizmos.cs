@@ -30,7 +30,7 @@ namespace SoftBodyDynamics.Editor
             if (mesh == null || !authoring.Material.IsValid)
                 return;
             TetrahedralBodyBuild build = SoftBodyTetrahedralPreviewCache.Build(mesh, authoring.BakedScale, authoring.method,
-                authoring.TetrahedralizationSettings, authoring.Material, authoring.MassSpringBuildSettings, authoring.femModel).Build;
+                authoring.TetrahedralizationSettings, authoring.Material, authoring.MassSpringBuildSettings, authoring.FemBuildSettings).Build;
             if (build == null || !build.Succeeded)
                 return;
 

@@ -25,7 +25,7 @@ namespace SoftBodyDynamics.Editor
             public TetrahedralizationSettings Tetrahedralization;
             public ElasticMaterial Material;
             public bool BendingSprings;
-            public FemMaterialModel FemModel;
+            public FemBuildSettings Fem;
             public SoftBodyMeshData Data;
             public TetrahedralBodyBuild Build;
         }
@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Editor
         /// <summary>A cached <see cref="SoftBodyAuthoringValidation.BuildTetrahedral"/>.</summary>
         public static (SoftBodyMeshData Mesh, TetrahedralBodyBuild Build) Build(Mesh mesh, float3 scale, SoftBodyMethod method,
             in TetrahedralizationSettings tetrahedralization, in ElasticMaterial material, in MassSpringBuildSettings springs,
-            FemMaterialModel femModel)
+            in FemBuildSettings fem)
         {
             int vertexCount = mesh.vertexCount;
             for (int i = s_Entries.Count - 1; i >= 0; i--)
@@ -44,7 +44,7 @@ namespace SoftBodyDynamics.Editor
                 Entry e = s_Entries[i];
                 if (!ReferenceEquals(e.Mesh, mesh) || e.VertexCount != vertexCount || !math.all(e.Scale == scale) || e.Method != method
                     || !Same(e.Tetrahedralization, tetrahedralization) || !Same(e.Material, material)
-                    || e.BendingSprings != springs.BendingSprings || e.FemModel != femModel)
+                    || e.BendingSprings != springs.BendingSprings || !e.Fem.SameAs(fem))
                     continue;
                 s_Entries.RemoveAt(i);
                 s_Entries.Add(e);
@@ -52,11 +52,11 @@ namespace SoftBodyDynamics.Editor
             }
 
             (SoftBodyMeshData data, TetrahedralBodyBuild build) = SoftBodyAuthoringValidation.BuildTetrahedral(mesh, scale, method,
-                tetrahedralization, material, springs, femModel);
+                tetrahedralization, material, springs, fem);
             s_Entries.Add(new Entry
             {
                 Mesh = mesh, VertexCount = vertexCount, Scale = scale, Method = method, Tetrahedralization = tetrahedralization,
-                Material = material, BendingSprings = springs.BendingSprings, FemModel = femModel, Data = data, Build = build,
+                Material = material, BendingSprings = springs.BendingSprings, Fem = fem, Data = data, Build = build,
             });
             if (s_Entries.Count > k_Capacity)
                 s_Entries.RemoveAt(0);

@@ -28,7 +28,7 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>Reads <paramref name="mesh"/> at <paramref name="scale"/> and builds a mass-spring or FEM body; the inspector passes a cached version of <see cref="BuildTetrahedral"/>.</summary>
         public delegate (SoftBodyMeshData Mesh, TetrahedralBodyBuild Build) TetrahedralBuildFunction(Mesh mesh, float3 scale,
             SoftBodyMethod method, in TetrahedralizationSettings tetrahedralization, in ElasticMaterial material,
-            in MassSpringBuildSettings springs, FemMaterialModel femModel);
+            in MassSpringBuildSettings springs, in FemBuildSettings fem);
 
         /// <summary>
         /// The fixed step (s) the stability warning assumes: the default timestep of Entities' FixedStepSimulationSystemGroup.
@@ -90,14 +90,17 @@ namespace SoftBodyDynamics.Authoring
             if (massSpring)
                 MassSpringParameterValidation.Validate(authoring.MassSpringParameters, report.Issues);
             else
+            {
                 FemParameterValidation.Validate(authoring.FemParameters, report.Issues);
+                FemParameterValidation.Validate(authoring.FemBuildSettings, report.Issues);
+            }
             if (mesh == null || !materialValid)
             {
                 TetrahedralizationSettings.Validate(tetrahedralization, report.Issues);
                 return;
             }
             (report.Mesh, report.Tetrahedral) = buildTetrahedral(mesh, authoring.BakedScale, authoring.method, tetrahedralization, material,
-                authoring.MassSpringBuildSettings, authoring.femModel);
+                authoring.MassSpringBuildSettings, authoring.FemBuildSettings);
             report.Issues.AddRange(report.Tetrahedral.Issues);
             if (report.Tetrahedral.Succeeded)
                 CheckStableStep(authoring, report.Tetrahedral.MaxStableStep, report.Issues);
@@ -136,10 +139,10 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>The uncached mass-spring or FEM build: reads the mesh at <paramref name="scale"/> and runs <see cref="TetrahedralBodyBuilder.Build"/>.</summary>
         public static (SoftBodyMeshData Mesh, TetrahedralBodyBuild Build) BuildTetrahedral(Mesh mesh, float3 scale, SoftBodyMethod method,
             in TetrahedralizationSettings tetrahedralization, in ElasticMaterial material, in MassSpringBuildSettings springs,
-            FemMaterialModel femModel)
+            in FemBuildSettings fem)
         {
             SoftBodyMeshData data = SoftBodyMeshData.Read(mesh, scale);
-            return (data, TetrahedralBodyBuilder.Build(data, method, tetrahedralization, material, springs, femModel));
+            return (data, TetrahedralBodyBuilder.Build(data, method, tetrahedralization, material, springs, fem));
         }
 
         /// <summary>The uncached build: reads the mesh at <paramref name="scale"/> and runs <see cref="SoftBodyBuilder.Build"/>.</summary>

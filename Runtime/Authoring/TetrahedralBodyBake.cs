@@ -44,17 +44,19 @@ namespace SoftBodyDynamics.Authoring
                 BlobAssetReference<FemShapeBlob> shape = FemShapeBlobFactory.Create(body.Fem.AsModel(), Allocator.Persistent);
                 writer.AddBlob(ref shape);
                 SoftBodyArchetype.WriteFem(writer, shape, authoring.FemParameters);
-                AddEmbedding(build, body.Fem.RestPositions, body.Fem.RestCenter, writer);
+                AddEmbedding(build, body.Fem.RestPositions, body.Fem.RestCenter, writer, body.Fem.Order == FemElementOrder.Quadratic
+                    ? QuadraticTetrahedra.EmbeddingEdgeNodes(build.Tetrahedral.Tetrahedralization.Embedding, body.NodeCount, body.Fem.EdgeEnds)
+                    : null);
             }
             if (renderMesh != null)
                 writer.AddComponent(new SoftBodyRenderMesh { Mesh = renderMesh });
         }
 
         static void AddEmbedding(SoftBodyAuthoringBuild build, Unity.Mathematics.float3[] restNodes, Unity.Mathematics.float3 restCenter,
-            ISoftBodyEntityWriter writer)
+            ISoftBodyEntityWriter writer, int[] edgeNodes = null)
         {
             BlobAssetReference<SoftBodyEmbeddingBlob> embedding = SoftBodyEmbeddingBlobFactory.Create(
-                build.Tetrahedral.Tetrahedralization.Embedding, build.Mesh.Normals, restNodes, restCenter, Allocator.Persistent);
+                build.Tetrahedral.Tetrahedralization.Embedding, build.Mesh.Normals, restNodes, restCenter, Allocator.Persistent, edgeNodes);
             writer.AddBlob(ref embedding);
             writer.AddComponent(new SoftBodyEmbedding { Blob = embedding });
         }

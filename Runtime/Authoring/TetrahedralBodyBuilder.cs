@@ -17,9 +17,9 @@ namespace SoftBodyDynamics.Authoring
         /// <param name="tetrahedralization">Resolution, node limit and weld settings.</param>
         /// <param name="material">The physical material (checked by the caller or by the model builders).</param>
         /// <param name="springs">Extra springs of the mass-spring network (ignored for FEM).</param>
-        /// <param name="femModel">The FEM constitutive model, for its stable step (ignored for mass-spring).</param>
+        /// <param name="fem">The FEM element order, rest factor and constitutive model (for its stable step); ignored for mass-spring.</param>
         public static TetrahedralBodyBuild Build(SoftBodyMeshData mesh, SoftBodyMethod method, in TetrahedralizationSettings tetrahedralization,
-            in ElasticMaterial material, in MassSpringBuildSettings springs, FemMaterialModel femModel)
+            in ElasticMaterial material, in MassSpringBuildSettings springs, in FemBuildSettings fem)
         {
             if (mesh == null)
                 throw new ArgumentNullException(nameof(mesh));
@@ -40,9 +40,21 @@ namespace SoftBodyDynamics.Authoring
             }
             else
             {
-                build.Fem = FemModelData.Create(volume, material, default, build.Issues);
+                build.Fem = FemModelData.Create(volume, material, default, build.Issues, fem.Order);
                 if (build.Fem != null)
-                    build.MaxStableStep = FemStability.MaxStableStep(build.Fem.AsModel(), femModel);
+                {
+                    build.MaxStableStep = FemStability.MaxStableStep(build.Fem.AsModel(), fem.Model);
+                    if (fem.RestFactor)
+                    {
+                        var parameters = FemParameters.Default;
+                        parameters.DampingFrequency = fem.DampingFrequency;
+                        float beta = FemSolver.DampingCoefficient(build.Fem.AsModel(), parameters.Sanitized());
+                        if (!build.Fem.BuildRestFactor(fem.Substep, beta))
+                            build.Issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemRestFactorFailed, -1,
+                                "The rest factor of the implicit step could not be built (its rest system is not positive definite in float64): "
+                                + "the body uses the block-Jacobi preconditioner, with more iterations per substep."));
+                    }
+                }
             }
             return build;
         }

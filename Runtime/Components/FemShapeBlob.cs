@@ -8,7 +8,8 @@ namespace SoftBodyDynamics
     /// Immutable, shareable data of a finite-element body (blob asset, tier 1): rest shape, lumped masses, the linear
     /// tetrahedra (nodes, Dm⁻¹, rest volume), their incidence (deterministic force gather) and colouring (per-colour
     /// projection), the Jacobi diagonal of the rest stiffness and the material constants the elements were built
-    /// with (μ, λ, ζ). Built at bake time by <see cref="FemShapeBlobFactory"/>; shared by every instance of a prefab.
+    /// with (μ, λ, ζ); for quadratic elements their 10 nodes and integration points, and the optional rest factor of the
+    /// implicit step (<see cref="FemRestFactor"/>). Built at bake time by <see cref="FemShapeBlobFactory"/>; shared by every instance of a prefab.
     /// Access it in place (<c>ref var shape = ref blob.Value;</c>).
     /// </summary>
     public struct FemShapeBlob
@@ -41,16 +42,32 @@ namespace SoftBodyDynamics
         public float DampingRatio;
         /// <summary>Reference frequency of the damping when the parameters give none (rad/s).</summary>
         public float DefaultDampingFrequency;
+        /// <summary>Quadratic elements: 10 nodes per element (empty for linear ones; <see cref="FemModel.ElementNodes"/>).</summary>
+        public BlobArray<int> ElementNodes;
+        /// <summary>Quadratic elements: shape-function gradients per integration point (1/m; <see cref="FemModel.PointGradients"/>).</summary>
+        public BlobArray<float3> PointGradients;
+        /// <summary>Quadratic elements: weight × rest volume per integration point (m³; <see cref="FemModel.PointVolumes"/>).</summary>
+        public BlobArray<float> PointVolumes;
+        /// <summary>Rest factor: free nodes in factor order (empty = block-Jacobi; <see cref="FemModel.FactorNodes"/>).</summary>
+        public BlobArray<int> FactorNodes;
+        /// <summary>Rest factor: envelope row starts (<see cref="FemModel.FactorRowStarts"/>).</summary>
+        public BlobArray<int> FactorRowStarts;
+        /// <summary>Rest factor: the Cholesky factor's envelope values (<see cref="FemModel.FactorValues"/>).</summary>
+        public BlobArray<float> FactorValues;
 
         /// <summary>Number of nodes.</summary>
         public int ParticleCount => RestPositions.Length;
         /// <summary>Number of tetrahedra.</summary>
         public int ElementCount => Elements.Length;
+        /// <summary>Integration points (one rotation each): the element count, 4 per element for quadratic ones.</summary>
+        public int PointCount => ElementNodes.Length > 0 ? QuadraticTet.PointCount * Elements.Length : Elements.Length;
 
         /// <summary>The solver's view of this blob (spans over blob memory, no copy). Call it on the blob in place.</summary>
         public FemModel AsModel() => new FemModel(SoftBodyShapeBlob.View(ref RestPositions), SoftBodyShapeBlob.View(ref Masses),
             SoftBodyShapeBlob.View(ref InverseMasses), SoftBodyShapeBlob.View(ref Elements), SoftBodyShapeBlob.View(ref IncidenceOffsets),
             SoftBodyShapeBlob.View(ref IncidenceSlots), SoftBodyShapeBlob.View(ref ColorOffsets), SoftBodyShapeBlob.View(ref ColorElements),
-            SoftBodyShapeBlob.View(ref StiffnessDiagonal), RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency);
+            SoftBodyShapeBlob.View(ref StiffnessDiagonal), RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency,
+            SoftBodyShapeBlob.View(ref ElementNodes), SoftBodyShapeBlob.View(ref PointGradients), SoftBodyShapeBlob.View(ref PointVolumes),
+            SoftBodyShapeBlob.View(ref FactorNodes), SoftBodyShapeBlob.View(ref FactorRowStarts), SoftBodyShapeBlob.View(ref FactorValues));
     }
 }

@@ -28,6 +28,12 @@ namespace SoftBodyDynamics
                 builder.Construct(ref root.ColorOffsets, model.ColorOffsets.ToArray());
                 builder.Construct(ref root.ColorElements, model.ColorElements.ToArray());
                 builder.Construct(ref root.StiffnessDiagonal, model.StiffnessDiagonal.ToArray());
+                builder.Construct(ref root.ElementNodes, model.ElementNodes.ToArray());
+                builder.Construct(ref root.PointGradients, model.PointGradients.ToArray());
+                builder.Construct(ref root.PointVolumes, model.PointVolumes.ToArray());
+                builder.Construct(ref root.FactorNodes, model.FactorNodes.ToArray());
+                builder.Construct(ref root.FactorRowStarts, model.FactorRowStarts.ToArray());
+                builder.Construct(ref root.FactorValues, model.FactorValues.ToArray());
                 root.RestCenter = model.RestCenter;
                 root.Mu = model.Mu;
                 root.Lambda = model.Lambda;

@@ -109,6 +109,7 @@ namespace SoftBodyDynamics
             writer.AddComponent(new FemSettings { Value = parameters });
             writer.AddComponent(new FemDiagnostics());
             writer.AddBuffer<FemElementRotation>();
+            writer.AddBuffer<FemWarmStart>();
             WriteParticleBody(writer);
         }
 

@@ -23,6 +23,11 @@ namespace SoftBodyDynamics
         public BlobArray<float3> RestNodePositions;
         /// <summary>Centre of mass of the rest nodes in mesh space (m): where the body's placement refers to.</summary>
         public float3 RestCenter;
+        /// <summary>
+        /// Quadratic FEM elements: the 6 edge nodes of each render vertex's tetrahedron, so positions follow the quadratic
+        /// shape functions (<see cref="EmbeddedMeshDeformation.QuadraticPosition"/>); empty otherwise.
+        /// </summary>
+        public BlobArray<int> EdgeNodes;
 
         /// <summary>Number of render vertices.</summary>
         public int VertexCount => Vertices.Length;
@@ -33,6 +38,8 @@ namespace SoftBodyDynamics
         public ReadOnlySpan<EmbeddedVertex> VerticesSpan => SoftBodyShapeBlob.View(ref Vertices);
         /// <summary>Rest normals as a span over blob memory.</summary>
         public ReadOnlySpan<float3> RestNormalsSpan => SoftBodyShapeBlob.View(ref RestNormals);
+        /// <summary>Edge nodes as a span over blob memory (empty unless quadratic).</summary>
+        public ReadOnlySpan<int> EdgeNodesSpan => SoftBodyShapeBlob.View(ref EdgeNodes);
         /// <summary>Rest nodes as a span over blob memory.</summary>
         public ReadOnlySpan<float3> RestNodePositionsSpan => SoftBodyShapeBlob.View(ref RestNodePositions);
     }

@@ -18,10 +18,14 @@ namespace SoftBodyDynamics
         /// <param name="restNodePositions">Rest node positions (m, mesh space) the embedding was built from.</param>
         /// <param name="restCenter">Rest centre of mass of the nodes (m, mesh space).</param>
         /// <param name="allocator">Allocator of the blob (<see cref="Allocator.Persistent"/> for baking).</param>
+        /// <param name="edgeNodes">Quadratic FEM: 6 edge nodes per embedded vertex (<see cref="QuadraticTetrahedra.EmbeddingEdgeNodes"/>); null = linear.</param>
         /// <exception cref="ArgumentException">Counts differ or a node index is out of range.</exception>
         public static BlobAssetReference<SoftBodyEmbeddingBlob> Create(EmbeddedVertex[] embedding, float3[] restNormals,
-            float3[] restNodePositions, float3 restCenter, Allocator allocator)
+            float3[] restNodePositions, float3 restCenter, Allocator allocator, int[] edgeNodes = null)
         {
+            edgeNodes ??= Array.Empty<int>();
+            if (edgeNodes.Length != 0 && edgeNodes.Length != QuadraticTet.EdgeCount * (embedding?.Length ?? 0))
+                throw new ArgumentException($"{edgeNodes.Length} edge nodes for {embedding?.Length ?? 0} embedded vertices (6 each).", nameof(edgeNodes));
             embedding ??= Array.Empty<EmbeddedVertex>();
             restNormals ??= Array.Empty<float3>();
             restNodePositions ??= Array.Empty<float3>();
@@ -35,6 +39,7 @@ namespace SoftBodyDynamics
                 builder.Construct(ref root.RestNormals, restNormals);
                 builder.Construct(ref root.RestNodePositions, restNodePositions);
                 root.RestCenter = restCenter;
+                builder.Construct(ref root.EdgeNodes, edgeNodes);
                 return builder.CreateBlobAssetReference<SoftBodyEmbeddingBlob>(allocator);
             }
             finally

@@ -12,7 +12,7 @@ namespace SoftBodyDynamics
     /// Places and steps every finite-element body once per fixed step. Runs only while some entity has a
     /// <see cref="FemShape"/> (a scene of shape-matching or mass-spring bodies pays nothing for it). Per update, three
     /// Burst jobs, one body per job index: bodies with <see cref="SoftBodyUninitialized"/> enabled get their buffers
-    /// sized (nodes and <see cref="FemElementRotation"/>s) and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="FemSolver.Initialize"/>);
+    /// sized (nodes, <see cref="FemWarmStart"/>s and <see cref="FemElementRotation"/>s) and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="FemSolver.Initialize"/>);
     /// pending <see cref="SoftBodyImpulse"/>s are applied; then <see cref="FemSolver.Step"/>, the same function
     /// the .NET tests call, advances every body against all <see cref="SoftBodyCollider"/>s. A
     /// <see cref="SoftBodyWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
@@ -49,6 +49,9 @@ namespace SoftBodyDynamics
             colliders.Dispose(state.Dependency);
         }
 
+        static System.Span<float3> AsSpan(DynamicBuffer<FemWarmStart> buffer) =>
+            buffer.Reinterpret<float3>().AsNativeArray().AsSpan();
+
         static System.Span<quaternion> AsSpan(DynamicBuffer<FemElementRotation> buffer) =>
             buffer.Reinterpret<quaternion>().AsNativeArray().AsSpan();
 
@@ -58,15 +61,17 @@ namespace SoftBodyDynamics
         {
             void Execute(in FemShape shape, ref LocalTransform transform, ref ParticleBodyState body,
                 DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
-                DynamicBuffer<FemElementRotation> rotations, EnabledRefRW<SoftBodyUninitialized> uninitialized)
+                DynamicBuffer<FemElementRotation> rotations, DynamicBuffer<FemWarmStart> warmStart,
+                EnabledRefRW<SoftBodyUninitialized> uninitialized)
             {
                 ref FemShapeBlob blob = ref shape.Blob.Value;
                 positions.ResizeUninitialized(blob.ParticleCount);
                 velocities.ResizeUninitialized(blob.ParticleCount);
-                rotations.ResizeUninitialized(blob.ElementCount);
-                // Placing the rest shape needs no scratch (see FemState).
+                rotations.ResizeUninitialized(blob.PointCount);
+                warmStart.ResizeUninitialized(blob.ParticleCount);
+                // Placing the rest shape needs no scratch (see FemState); it clears the warm start.
                 var solverState = new FemState(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
-                    AsSpan(rotations), default, default, default, default, default, default);
+                    AsSpan(rotations), default, default, default, default, default, default, default, AsSpan(warmStart));
                 quaternion rotation = math.normalizesafe(transform.Rotation);
                 transform = LocalTransform.FromPositionRotation(transform.Position, rotation);
                 FemSolver.Initialize(blob.AsModel(), solverState, SoftBodyPlacement.CenterOfMass(transform, blob.RestCenter),
@@ -105,19 +110,19 @@ namespace SoftBodyDynamics
 
             void Execute(Entity entity, in FemShape shape, in FemSettings settings, ref ParticleBodyState body,
                 ref FemDiagnostics diagnostics, ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions,
-                DynamicBuffer<SoftBodyVelocity> velocities, DynamicBuffer<FemElementRotation> rotations)
+                DynamicBuffer<SoftBodyVelocity> velocities, DynamicBuffer<FemElementRotation> rotations, DynamicBuffer<FemWarmStart> warmStart)
             {
                 ref FemShapeBlob blob = ref shape.Blob.Value;
                 int n = blob.ParticleCount;
                 // Buffers are sized by the initialization job; anything else is not a body this job can step.
-                if (positions.Length != n || velocities.Length != n || rotations.Length != blob.ElementCount)
+                if (positions.Length != n || velocities.Length != n || rotations.Length != blob.PointCount || warmStart.Length != n)
                     return;
                 var scratch = new NativeArray<float3>(FemState.ScratchPerParticle * n, Allocator.Temp,
                     NativeArrayOptions.UninitializedMemory);
-                var elementScratch = new NativeArray<float3>(FemState.ScratchPerElement * blob.ElementCount, Allocator.Temp,
+                var elementScratch = new NativeArray<float3>(FemState.ScratchPerElement * blob.PointCount, Allocator.Temp,
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = FemState.FromScratch(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
-                    AsSpan(rotations), scratch.AsSpan(), elementScratch.AsSpan());
+                    AsSpan(rotations), scratch.AsSpan(), elementScratch.AsSpan(), AsSpan(warmStart));
                 FemParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
                 FemStepReport full = FemSolver.Step(blob.AsModel(), parameters,
                     Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);

@@ -118,8 +118,9 @@ namespace SoftBodyDynamics
                 quaternion inverse = math.conjugate(math.normalizesafe(body.Status.Rotation));
                 for (int i = 0; i < n; i++)
                     local[i] = math.rotate(inverse, x[i] - body.Status.LocalCenter) + blob.RestCenter;
-                AxisAlignedBox box = EmbeddedMeshDeformation.Deform(blob.VerticesSpan, blob.RestNodePositionsSpan, blob.RestNormalsSpan,
-                    local.AsReadOnlySpan(), vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan());
+                AxisAlignedBox box = EmbeddedMeshDeformation.Deform(blob.VerticesSpan, blob.EdgeNodesSpan, blob.RestNodePositionsSpan,
+                    blob.RestNormalsSpan, local.AsReadOnlySpan(), vertices.Reinterpret<DeformedVertex>().AsNativeArray().AsSpan(), 0,
+                    blob.VertexCount);
                 local.Dispose();
 
                 if (!math.all(math.isfinite(box.Min)) || !math.all(math.isfinite(box.Max)))

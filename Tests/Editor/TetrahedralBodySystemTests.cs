@@ -65,11 +65,13 @@ namespace SoftBodyDynamics.Tests.Editor
             return entity;
         }
 
-        Entity CreateFemBody(float3 position, FemParameters parameters)
+        Entity CreateFemBody(float3 position, FemParameters parameters, FemElementOrder order = FemElementOrder.Linear, bool restFactor = false)
         {
             var issues = new List<SoftBodyIssue>();
-            FemModelData model = FemModelData.Create(Cube(), ElasticMaterial.Jelly, default, issues);
+            FemModelData model = FemModelData.Create(Cube(), ElasticMaterial.Jelly, default, issues, order);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
+            if (restFactor)
+                Assert.That(model.BuildRestFactor(k_Dt / parameters.Substeps, FemSolver.DampingCoefficient(model.AsModel(), parameters)), Is.True);
             BlobAssetReference<FemShapeBlob> blob = FemShapeBlobFactory.Create(model.AsModel(), Allocator.Persistent);
             m_Blobs.Add(blob);
             Entity entity = m_Manager.CreateEntity();
@@ -153,6 +155,24 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(m_Manager.GetBuffer<FemElementRotation>(body, true).Length, Is.EqualTo(48), "one rotation per tetrahedron");
             AssertFiniteAndFell(body, 5f);
             Assert.That(m_Manager.GetComponentData<FemDiagnostics>(body).LastReport.IntegratorFallback, Is.False);
+        }
+
+        [Test]
+        public void QuadraticFemBody_WithRestFactor_HasAPointRotationEach_AndFalls([Values] FemMaterialModel model)
+        {
+            FemParameters parameters = FemParameters.Default;
+            parameters.Model = model;
+            Entity body = CreateFemBody(new float3(2f, 5f, 0f), parameters, FemElementOrder.Quadratic, true);
+
+            Update(30);
+
+            Assert.That(m_Manager.GetBuffer<FemElementRotation>(body, true).Length, Is.EqualTo(4 * 48), "one rotation per integration point");
+            Assert.That(m_Manager.GetBuffer<FemWarmStart>(body, true).Length, Is.EqualTo(m_Manager.GetBuffer<SoftBodyPosition>(body, true).Length));
+            AssertFiniteAndFell(body, 5f);
+            FemStepReport report = m_Manager.GetComponentData<FemDiagnostics>(body).LastReport;
+            Assert.That(report.CgConverged, Is.True);
+            // The rest factor's preconditioning: a handful of iterations per substep at most.
+            Assert.That(report.MaxCgIterations, Is.LessThan(20));
         }
 
         [Test]

@@ -32,5 +32,17 @@ namespace SoftBodyDynamics.Solvers
             ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, p.RotationIterations);
             return !SoftBodyIssue.AnyError(issues, before);
         }
+
+        /// <summary>Appends an error for a bad element order or rest-factor substep; returns true when none was added.</summary>
+        public static bool Validate(in FemBuildSettings s, List<SoftBodyIssue> issues)
+        {
+            int before = issues.Count;
+            if (s.Order != FemElementOrder.Linear && s.Order != FemElementOrder.Quadratic)
+                ParameterChecks.Error(issues, SoftBodyIssueCode.FemElementOrderInvalid, Invariant($"Element order is {(int)s.Order}, which is not Linear or Quadratic."));
+            if (s.RestFactor && !(s.Substep > 0f && s.Substep < float.PositiveInfinity))
+                ParameterChecks.Error(issues, SoftBodyIssueCode.FemIterationsOutOfRange, Invariant(
+                    $"The rest factor's substep is {s.Substep} s; it must be a finite time above 0 (the fixed step over the substeps)."));
+            return !SoftBodyIssue.AnyError(issues, before);
+        }
     }
 }

@@ -46,5 +46,31 @@ namespace SoftBodyDynamics.Solvers
             for (int k = 0; k < edgeEnds.Length; k++)
                 positions[corners + k] = 0.5f * (mesh.Positions[edgeEnds[k].x] + mesh.Positions[edgeEnds[k].y]);
         }
+
+        /// <summary>
+        /// Per render vertex, the 6 edge nodes of its tetrahedron (<see cref="QuadraticTet.EdgeCorners"/> order over its 4 nodes),
+        /// for the quadratic skinning of <see cref="EmbeddedMeshDeformation.QuadraticPosition"/>. <paramref name="edgeEnds"/>
+        /// from <see cref="Build"/> (edge node k is node <paramref name="cornerCount"/> + k). Throws when a vertex's nodes are not a tetrahedron's.
+        /// </summary>
+        public static int[] EmbeddingEdgeNodes(EmbeddedVertex[] embedding, int cornerCount, int2[] edgeEnds)
+        {
+            var index = new Dictionary<long, int>(edgeEnds.Length);
+            for (int k = 0; k < edgeEnds.Length; k++)
+                index[(long)edgeEnds[k].x * cornerCount + edgeEnds[k].y] = cornerCount + k;
+            var nodes = new int[QuadraticTet.EdgeCount * embedding.Length];
+            for (int v = 0; v < embedding.Length; v++)
+            {
+                int4 c = embedding[v].Nodes;
+                for (int k = 0; k < QuadraticTet.EdgeCount; k++)
+                {
+                    int2 e = QuadraticTet.EdgeCorners(k);
+                    int i = math.min(c[e.x], c[e.y]), j = math.max(c[e.x], c[e.y]);
+                    if (!index.TryGetValue((long)i * cornerCount + j, out int node))
+                        throw new System.ArgumentException($"Render vertex {v}: nodes {i} and {j} share no edge of the mesh.", nameof(embedding));
+                    nodes[QuadraticTet.EdgeCount * v + k] = node;
+                }
+            }
+            return nodes;
+        }
     }
 }

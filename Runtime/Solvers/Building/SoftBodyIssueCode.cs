@@ -214,6 +214,10 @@ namespace SoftBodyDynamics.Solvers
         FemCgToleranceInvalid = 194,
         /// <summary>The Rayleigh damping reference frequency is negative or not finite (0 = the model's estimate).</summary>
         FemDampingFrequencyInvalid = 195,
+        /// <summary>The FEM element order is not Linear or Quadratic.</summary>
+        FemElementOrderInvalid = 196,
+        /// <summary>Warning: the rest factor of the implicit step could not be built; the body uses block-Jacobi preconditioning.</summary>
+        FemRestFactorFailed = 197,
 
         // ---- Fluids (FluidValidation)
 

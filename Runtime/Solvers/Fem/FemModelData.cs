@@ -118,6 +118,9 @@ namespace SoftBodyDynamics.Solvers
             List<SoftBodyIssue> issues, FemElementOrder order = FemElementOrder.Linear)
         {
             int start = issues.Count;
+            if (order != FemElementOrder.Linear && order != FemElementOrder.Quadratic)
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemElementOrderInvalid, -1,
+                    $"Element order {(int)order} is not Linear or Quadratic."));
             if (!material.IsValid)
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemMaterialInvalid, -1,
                     $"The material is invalid (E = {material.YoungsModulus} Pa, ν = {material.PoissonRatio}, ρ = {material.Density} kg/m³, " +

@@ -15,6 +15,8 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Nodes per element.</summary>
         public const int NodeCount = 10;
+        /// <summary>Edge nodes per element.</summary>
+        public const int EdgeCount = 6;
         /// <summary>Quadrature points per element.</summary>
         public const int PointCount = 4;
 

@@ -53,7 +53,17 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>Positions and normals of render vertices start .. end − 1; returns their bounds (merge the batches' bounds with min/max).</summary>
         public static AxisAlignedBox Deform(ReadOnlySpan<EmbeddedVertex> embedding, ReadOnlySpan<float3> restNodePositions,
-            ReadOnlySpan<float3> restNormals, ReadOnlySpan<float3> nodePositions, Span<DeformedVertex> vertices, int start, int end)
+            ReadOnlySpan<float3> restNormals, ReadOnlySpan<float3> nodePositions, Span<DeformedVertex> vertices, int start, int end) =>
+            Deform(embedding, default, restNodePositions, restNormals, nodePositions, vertices, start, end);
+
+        /// <summary>
+        /// As above for a body of quadratic elements: <paramref name="edgeNodes"/> holds each vertex's 6 edge nodes
+        /// (<see cref="QuadraticTet.EdgeCorners"/> order over its 4 nodes; empty = linear elements), and positions follow
+        /// the quadratic shape functions (<see cref="QuadraticPosition"/>). Normals use the corner tetrahedron's F.
+        /// </summary>
+        public static AxisAlignedBox Deform(ReadOnlySpan<EmbeddedVertex> embedding, ReadOnlySpan<int> edgeNodes,
+            ReadOnlySpan<float3> restNodePositions, ReadOnlySpan<float3> restNormals, ReadOnlySpan<float3> nodePositions,
+            Span<DeformedVertex> vertices, int start, int end)
         {
             if (end <= start)
                 return default;
@@ -61,7 +71,9 @@ namespace SoftBodyDynamics.Solvers
             for (int v = start; v < end; v++)
             {
                 EmbeddedVertex e = embedding[v];
-                float3 position = Position(e, nodePositions);
+                float3 position = edgeNodes.Length > 0
+                    ? QuadraticPosition(e, edgeNodes.Slice(QuadraticTet.EdgeCount * v, QuadraticTet.EdgeCount), nodePositions)
+                    : Position(e, nodePositions);
                 vertices[v] = new DeformedVertex
                 {
                     Position = position,
@@ -77,6 +89,26 @@ namespace SoftBodyDynamics.Solvers
         public static float3 Position(in EmbeddedVertex e, ReadOnlySpan<float3> nodePositions) =>
             e.Weights.x * nodePositions[e.Nodes.x] + e.Weights.y * nodePositions[e.Nodes.y]
             + e.Weights.z * nodePositions[e.Nodes.z] + e.Weights.w * nodePositions[e.Nodes.w];
+
+        /// <summary>
+        /// Σ N_a(w) x_a over the 10 nodes of a quadratic element, with the vertex's barycentric weights w: the linear position
+        /// plus Σ_edges 4 w_a w_b (x_ab − ½(x_a + x_b)) (the corner functions L_a(2L_a − 1) regrouped by edge). Equal to
+        /// <see cref="Position"/> while every edge node sits at its edge's midpoint.
+        /// </summary>
+        public static float3 QuadraticPosition(in EmbeddedVertex e, ReadOnlySpan<int> edgeNodes, ReadOnlySpan<float3> nodePositions)
+        {
+            float3 x = Position(e, nodePositions);
+            for (int k = 0; k < QuadraticTet.EdgeCount; k++)
+            {
+                int2 ends = QuadraticTet.EdgeCorners(k);
+                int a = e.Nodes[ends.x], b = e.Nodes[ends.y];
+                x += 4f * Component(e.Weights, ends.x) * Component(e.Weights, ends.y)
+                     * (nodePositions[edgeNodes[k]] - 0.5f * (nodePositions[a] + nodePositions[b]));
+            }
+            return x;
+        }
+
+        static float Component(float4 w, int k) => k == 0 ? w.x : k == 1 ? w.y : k == 2 ? w.z : w.w;
 
         /// <summary>Unit normal cof(Ds)·(Dmᵀ N) / |…| of a rest normal N carried by the tetrahedron (see the class summary).</summary>
         public static float3 Normal(int4 nodes, ReadOnlySpan<float3> restNodePositions, ReadOnlySpan<float3> nodePositions, float3 restNormal)

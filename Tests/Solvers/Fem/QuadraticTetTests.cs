@@ -108,6 +108,30 @@ namespace SoftBodyDynamics.Tests.Solvers
                 }
         }
 
+        /// <summary>
+        /// A render vertex skinned to a quadratic element follows a quadratic deformation of the nodes exactly (to float32
+        /// round-off), where the corner tetrahedron's linear map misses the curvature; at rest both give the vertex back.
+        /// </summary>
+        [Test]
+        public void QuadraticSkinning_FollowsAQuadraticField()
+        {
+            TetrahedralMesh mesh = FemTestBodies.Box(1, 1, 1, new float3(0.2f));
+            FemModelData data = FemTestBodies.Bake(mesh, s_Rubber, null, FemElementOrder.Quadratic);
+            int4 tet = mesh.Tetrahedra[0];
+            var weights = new float4(0.1f, 0.2f, 0.3f, 0.4f);
+            var vertex = new EmbeddedVertex { Nodes = tet, Weights = weights };
+            float3 rest = weights.x * mesh.Positions[tet.x] + weights.y * mesh.Positions[tet.y] + weights.z * mesh.Positions[tet.z]
+                          + weights.w * mesh.Positions[tet.w];
+            int[] edgeNodes = QuadraticTetrahedra.EmbeddingEdgeNodes(new[] { vertex }, mesh.NodeCount, data.EdgeEnds);
+            Assert.That(math.distance(EmbeddedMeshDeformation.QuadraticPosition(vertex, edgeNodes, data.RestPositions), rest), Is.LessThan(1e-6f));
+            static float3 Field(float3 p) => p + new float3(2f * p.y * p.y, -1.5f * p.x * p.z, 0.8f * p.x * p.x);
+            var x = Array.ConvertAll(data.RestPositions, Field);
+            float3 quadratic = EmbeddedMeshDeformation.QuadraticPosition(vertex, edgeNodes, x);
+            float3 linear = EmbeddedMeshDeformation.Position(vertex, x);
+            Assert.That(math.distance(quadratic, Field(rest)), Is.LessThan(1e-6f));
+            Assert.That(math.distance(linear, Field(rest)), Is.GreaterThan(1e-3f), "the linear map misses the curvature");
+        }
+
         [Test]
         public void IntegrationVolumes_SumToTheBodyVolume()
         {
