@@ -13,9 +13,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <list type="bullet">
     /// <item>gᵢ(x) = Σ_c (1/nᵢ) g_c,i: the average over the particle's clusters of each cluster's goal c_c + T_c q_c,i,
     /// with c_c = Σ w x / Σ w, A_pq = Σ w (x − c_c) qᵀ, weights wᵢ = mᵢ/nᵢ, and T_c = R (rigid: the polar rotation of
-    /// A_pq, by Higham's iteration, <see cref="Matrix3d.PolarRotation"/>), R + β·fade·LimitStrain(Ã − R) (linear:
-    /// Ã = A/∛det A, A = A_pq A_qq⁻¹, the strain limited to a Frobenius norm of 1 and faded out toward a flat or
-    /// inverted cluster exactly as <see cref="VolumePreservation.LinearGoalTransform"/> specifies), or the quadratic goals of
+    /// A_pq, by Higham's iteration, <see cref="Matrix3d.PolarRotation"/>), R + β·fade·LimitStrain(A − R) + V (linear:
+    /// A = A_pq A_qq⁻¹, the strain limited to a Frobenius norm of 1 and faded out toward a flat or inverted cluster, V the
+    /// volume energy's gradient, exactly as <see cref="VolumePreservation.ConservativeLinearGoalTransform"/> specifies), or the quadratic goals of
     /// <see cref="QuadraticGoalsDouble"/> (the float64 statement of the solver's quadratic mode; it has no strain
     /// limit, so the quadratic reference holds while the quadratic strain stays below 1);</item>
     /// <item>P removes from the pull its mass-weighted mean and the rigid rotation δθ × (xᵢ − x_cm) with
@@ -38,6 +38,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly double[] m_Mass, m_InverseCount, m_Weight, m_ClusterMass;
         readonly Vector3d[] m_RestOffset;
         readonly Matrix3d[] m_AqqInverse;
+        readonly double[] m_LengthSquared;
         readonly bool[] m_LinearValid, m_QuadraticValid;
         readonly float3[][] m_QuadraticRest, m_QuadraticX;
         readonly float[][] m_QuadraticWeight;
@@ -76,6 +77,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_RestOffset = new Vector3d[entries];
             m_ClusterMass = new double[clusters];
             m_AqqInverse = new Matrix3d[clusters];
+            m_LengthSquared = new double[clusters];
             m_LinearValid = new bool[clusters];
             m_QuadraticValid = new bool[clusters];
             m_QuadraticRest = new float3[clusters][];
@@ -104,6 +106,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 double trace = (aqq.M00 + aqq.M11 + aqq.M22) / 3.0;
                 m_LinearValid[c] = trace > 0 && aqq.Determinant > ShapeMatching.PlanarRestShapeThreshold * trace * trace * trace;
                 m_AqqInverse[c] = m_LinearValid[c] ? aqq.Inverse : Matrix3d.Identity;
+                m_LengthSquared[c] = mass > 0 ? 3.0 * trace / mass : 0.0;
                 m_QuadraticValid[c] = m_Mode == ShapeMatchingMode.Quadratic && model.ClusterRest[c].QuadraticValid;
                 if (m_QuadraticValid[c])
                 {
@@ -255,7 +258,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int k = start; k < end; k++)
                     apq += m_Weight[k] * Matrix3d.Outer(x[model.ClusterParticles[k]] - center, m_RestOffset[k]);
                 Matrix3d r = apq.PolarRotation();
-                Matrix3d t = m_Mode == ShapeMatchingMode.Rigid || !m_LinearValid[c] ? r : LinearGoalTransform(apq * m_AqqInverse[c], r, m_Beta);
+                Matrix3d t = m_Mode == ShapeMatchingMode.Rigid || !m_LinearValid[c] ? r : LinearGoalTransform(apq * m_AqqInverse[c], r, m_Beta,
+                    m_ClusterMass[c] * m_LengthSquared[c], m_AqqInverse[c]);
                 for (int k = start; k < end; k++)
                 {
                     int i = model.ClusterParticles[k];
@@ -283,29 +287,29 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>
-        /// The linear mode's goal transform in float64, as <see cref="VolumePreservation.LinearGoalTransform"/> states it:
-        /// Ã = A/∛det A (det relative to A's largest entry); R when that det is at or below the floor; otherwise
-        /// R + β·fade·(Ã − R) with the strain Ã − R scaled to a Frobenius norm of at most <see cref="VolumePreservation.MaxGoalStrain"/>
-        /// and fade = saturate((det − floor) / (9·floor)).
+        /// The linear mode's goal transform in float64, as <see cref="VolumePreservation.ConservativeLinearGoalTransform"/>
+        /// states it: R when det(A / max|Aᵢⱼ|) is at or below the floor; otherwise R + w·(A − R) + V with w = β·fade, the strain
+        /// A − R scaled to a Frobenius norm of at most <see cref="VolumePreservation.MaxGoalStrain"/>, fade = saturate((det − floor)
+        /// / (9·floor)) and V = −(w/9)(det A − 1) M L² cof(A) A_qq⁻¹.
         /// </summary>
-        public static Matrix3d LinearGoalTransform(in Matrix3d a, in Matrix3d r, double beta)
+        public static Matrix3d LinearGoalTransform(in Matrix3d a, in Matrix3d r, double beta, double massLengthSquared, in Matrix3d aqqInverse)
         {
             const double floor = VolumePreservation.DefaultRelativeDeterminantFloor;
             double scale = a.MaxAbs;
             if (!(scale > 0))
                 return r;
-            Matrix3d an = (1.0 / scale) * a;
-            double det = an.Determinant;
+            double det = ((1.0 / scale) * a).Determinant;
             if (!(det > floor))
                 return r;
-            Matrix3d normalized = (1.0 / Math.Cbrt(det)) * an;
             // The solver's weight of the β part (1 away from flat or inverted clusters; its own piecewise-linear rule).
-            double fade = VolumePreservation.BetaFade((float)det);
-            Matrix3d strain = normalized - r;
+            double weight = Math.Min(1.0, Math.Max(0.0, beta)) * VolumePreservation.BetaFade((float)det);
+            Matrix3d strain = a - r;
             double norm = Math.Sqrt(strain.FrobeniusSquared);
             if (norm > VolumePreservation.MaxGoalStrain)
                 strain = (VolumePreservation.MaxGoalStrain / norm) * strain;
-            return r + (Math.Min(1.0, Math.Max(0.0, beta)) * fade) * strain;
+            double j = a.Determinant;
+            Matrix3d cofactor = j * a.Inverse.Transpose;
+            return r + weight * strain + (-weight / 9.0 * (j - 1.0) * massLengthSquared) * (cofactor * aqqInverse);
         }
     }
 }

@@ -6,7 +6,8 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// Goal positions of meshless shape matching (Müller, Heidelberger, Teschner &amp; Gross 2005):
     /// gᵢ = T (x⁰ᵢ − x⁰_cm) + x_cm, with T the rotation R of A_pq (§4.1) or the blend
-    /// β·Ã + (1 − β)·R of the volume-normalised linear transform Ã = A_pq A_qq⁻¹ / ∛det (§4.3).
+    /// β·A + (1 − β)·R of the linear transform A = A_pq A_qq⁻¹ with a volume energy's gradient in place of the paper's
+    /// normalisation A / ∛det A (§4.3; see <see cref="VolumePreservation.ConservativeLinearGoalTransform"/>).
     /// Pure functions on spans; no allocation.
     /// </summary>
     public static class ShapeMatching
@@ -110,7 +111,8 @@ namespace SoftBodyDynamics.Solvers
                 return r;
             }
             float3x3 aLinear = math.mul(apq, rest.AqqInverse);
-            return VolumePreservation.LinearGoalTransform(aLinear, r, beta, out rigidFallback);
+            return VolumePreservation.ConservativeLinearGoalTransform(aLinear, r, beta, rest.TotalMass, rest.LengthScale, rest.AqqInverse,
+                out rigidFallback);
         }
     }
 }

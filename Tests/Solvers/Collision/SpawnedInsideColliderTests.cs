@@ -53,9 +53,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// has an RMS radius 7–12 % above its rest one (box and sphere with the per-particle push, every method but Neo-Hookean
         /// implicit FEM, which the guard reset instead);
         /// one that left whole is back at rest size — within 1e-4 for every method and shape here — so 3 % separates the two.
-        /// The whole body moves at the depenetration speed; the shallow particles' own push-out adds to it (up to 1.51× the
-        /// cap here, co-rotational implicit FEM against the box); the per-particle push let the hybrid body reach 17–21× the cap
-        /// and Neo-Hookean implicit FEM 215× (then reset).
+        /// The whole body moves at the depenetration speed; the shallow particles' own push-out and the elastic recoil it
+        /// starts add to it (up to 1.51× the cap here for linear co-rotational implicit FEM against the box, 2.28× for quadratic
+        /// Neo-Hookean implicit FEM in its first step, 1.87× for quadratic co-rotational); the per-particle push let the hybrid
+        /// body reach 17–21× the cap and Neo-Hookean implicit FEM 215× (then reset). The 2.5× bound is a regression guard above
+        /// those measured recoils, not a derived limit: what it separates is a capped push-out from an uncapped one.
         /// </summary>
         [Test]
         public void BodySpawnedAroundACollider_LeavesItWhole([ValueSource(nameof(Methods))] string family, [Values("box", "sphere", "capsule")] string shape)
@@ -80,7 +82,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             }
             Assert.AreEqual(0, body.Resets, "no reset");
             Assert.That(RmsRadius(body) / rest, Is.InRange(0.97, 1.03), "the body's size");
-            Assert.That(fastest, Is.LessThanOrEqualTo(2.0 * k_MaxDepenetrationSpeed), "the depenetration speed");
+            Assert.That(fastest, Is.LessThanOrEqualTo(2.5 * k_MaxDepenetrationSpeed), "the depenetration speed");
             for (int i = 0; i < body.ParticleCount; i++)
                 Assert.That(ParticleCollision.Penetration(collider, body.Positions[i], 0f, out _, out _), Is.False, $"particle {i} is out");
         }
