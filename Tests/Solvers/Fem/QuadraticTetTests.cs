@@ -132,6 +132,25 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(math.distance(linear, Field(rest)), Is.GreaterThan(1e-3f), "the linear map misses the curvature");
         }
 
+        /// <summary>
+        /// The study's volume of a quadratic body splits each element at its edge nodes into 8 tetrahedra: at rest and under
+        /// an affine map it is the mesh's volume times det (float32 positions: 1e-6 relative); a bulge of the edge nodes counts.
+        /// </summary>
+        [Test]
+        public void StudyVolume_OfAQuadraticBody_CountsItsEdgeNodes()
+        {
+            TetrahedralMesh mesh = FemTestBodies.Box(2, 2, 2, new float3(0.2f));
+            FemModelData data = FemTestBodies.Bake(mesh, s_Rubber, null, FemElementOrder.Quadratic);
+            double rest = SoftBodyDynamics.Benchmarks.Scenarios.StudyBox.Volume(mesh, data.RestPositions);
+            Assert.That(rest, Is.EqualTo(0.008).Within(1e-6 * 0.008));
+            var stretched = Array.ConvertAll(data.RestPositions, p => p * new float3(1.2f, 0.9f, 1.1f));
+            Assert.That(SoftBodyDynamics.Benchmarks.Scenarios.StudyBox.Volume(mesh, stretched), Is.EqualTo(0.008 * 1.188).Within(1e-5 * 0.008));
+            var bulged = (float3[])data.RestPositions.Clone();
+            for (int i = mesh.NodeCount; i < bulged.Length; i++)
+                bulged[i] *= 1.01f;
+            Assert.That(SoftBodyDynamics.Benchmarks.Scenarios.StudyBox.Volume(mesh, bulged), Is.GreaterThan(rest * 1.001));
+        }
+
         [Test]
         public void IntegrationVolumes_SumToTheBodyVolume()
         {

@@ -106,18 +106,21 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public override void UseReference(object values) => CantileverTargets.Remember(Material, (CantileverTargets)values);
 
         /// <summary>
-        /// The default run keeps the sweeps behind the scene's findings — mass-spring implicit Euler to 5 cells across (where it
-        /// comes within 5 %), co-rotational implicit FEM to 2 (its error falling with the mesh) — and runs the other FEM variants
-        /// at 1 cell across only: at 2 each point costs 20–30 s of 1/60 s steps here.
-        /// </summary>
-        /// <summary>
         /// Explicit FEM diverges on this beam at 128 and 256 substeps, at ~8 s a point: the default run leaves it to --full and to the
         /// stability suite (its largest stable step against the explicit limit).
         /// </summary>
-        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.Knobs;
+        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.StandardKnobs;
 
+        /// <summary>
+        /// The default run keeps the sweeps behind the scene's findings — mass-spring implicit Euler to 5 cells across (where it
+        /// comes within 5 %), quadratic co-rotational implicit FEM to 2 (where it comes within 5 %) — and runs the other FEM
+        /// variants at 1 cell across only: linear elements lock at any resolution the default run can afford.
+        /// </summary>
         public override int StandardMaxResolution(MethodVariant variant) =>
-            variant.Family.StartsWith("FEM", StringComparison.Ordinal) && variant.Family != "FEM co-rotational implicit" ? 1 : variant.StandardMaxResolution;
+            variant.Family.StartsWith("FEM", StringComparison.Ordinal) && variant.Family != QuadraticCoRotational ? 1 : variant.StandardMaxResolution;
+
+        static readonly string QuadraticCoRotational =
+            FemMethodBody.FamilyName(FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, FemElementOrder.Quadratic);
 
         public override IReadOnlyList<Metric> Measure(MethodBodySetup setup, Func<MethodBodySetup, IMethodBody> build)
         {

@@ -135,7 +135,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public override void UseReference(object values) => Csm3Targets.Remember(Material, (Csm3Targets)values);
 
         /// <summary>Explicit FEM diverges on this beam at 128 substeps and reaches 64 % at 256: the default run leaves it to --full.</summary>
-        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.Knobs;
+        public override int[] StandardKnobs(MethodVariant variant) => IsExplicitFem(variant) ? new int[0] : variant.StandardKnobs;
 
         /// <summary>The default run runs FEM at 1 cell across only: at 2 each point costs 10–25 s of 1/60 s steps on this beam.</summary>
         public override int StandardMaxResolution(MethodVariant variant) =>

@@ -5,9 +5,10 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
     /// <summary>
-    /// Every method of the study and the knob values it is swept over: substeps (at most 3 values), and for FEM
-    /// co-rotational implicit, FEM Neo-Hookean XPBD and mass-spring implicit Euler the resolution (cells across the
-    /// thickness, one substep count each), the knob that removes the spatial error.
+    /// Every method of the study and the knob values it is swept over: substeps (at most 3 values), and for the implicit and
+    /// XPBD FEM variants and mass-spring implicit Euler the resolution (cells across the thickness), the knob that removes
+    /// the spatial error. Linear implicit FEM solves with block-Jacobi CG; quadratic FEM with the rest factor
+    /// (<see cref="FemRestFactor"/>) and warm starts.
     /// </summary>
     public static class MethodCatalog
     {
@@ -41,11 +42,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         const int ConvergedCgIterations = 2000;
         const float ConvergedCgTolerance = 1e-5f;
         /// <summary>
-        /// Finest resolution of the default run for the resolution-swept FEM variants: at 3 cells across one variant's cantilever or
-        /// CSM3 point costs over a minute (hundreds of 1/60 s steps of ~0.1–0.3 s each), so the default stops at 2 and
-        /// <see cref="RunScope.Full"/> goes on.
+        /// Finest resolution of the default run for the resolution-swept linear FEM variants: at 2 cells across one variant's
+        /// cantilever point costs ~12 s of evaluation (hundreds of CG iterations per 1/60 s step under block-Jacobi) and shows only
+        /// that linear elements lock, which 1 across shows too; <see cref="RunScope.Full"/> goes on.
         /// </summary>
-        const int StandardFemResolution = 2;
+        const int StandardFemResolution = 1;
+        /// <summary>
+        /// Finest resolution of the default run for quadratic co-rotational FEM: 2 cells across is where it comes within 5 % on the
+        /// cantilever at a few ms per step; 3 and 4 (to 1 %) cost 35–185 ms per step and run in <see cref="RunScope.Full"/>.
+        /// </summary>
+        const int StandardQuadraticResolution = 2;
         /// <summary>
         /// Finest resolution of the default run for mass-spring implicit Euler: 5 cells across is where the calibrated network comes
         /// within 5 % on the cantilever (the study's finding), 6 only shows it crossing the reference.
@@ -89,14 +95,16 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodVariant(FemMethodBody.FamilyName(FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, FemElementOrder.Quadratic),
                 "substeps", new[] { 1, 2 }, new[] { 1 },
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.CoRotational, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
-                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions, particleCount: QuadraticParticles),
+                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions,
+                standardMaxResolution: StandardQuadraticResolution, particleCount: QuadraticParticles, standardKnobs: new[] { 1 }),
             new MethodVariant("FEM Neo-Hookean implicit", "substeps", new[] { 1 }, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
                     ConvergedCgTolerance), s_NeoHookeanImplicitResolutions, standardMaxResolution: StandardFemResolution),
             new MethodVariant(FemMethodBody.FamilyName(FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, FemElementOrder.Quadratic),
                 "substeps", new[] { 2 }, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.ImplicitEuler, k, ConvergedCgIterations,
-                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions, particleCount: QuadraticParticles),
+                    ConvergedCgTolerance, order: FemElementOrder.Quadratic, restFactor: true), s_QuadraticResolutions,
+                particleCount: QuadraticParticles, standardKnobs: new int[0]),
             new MethodVariant("FEM Neo-Hookean explicit", "substeps", s_ExplicitFemKnobs, new int[0],
                 (s, k, h) => new FemMethodBody(s, FemMaterialModel.NeoHookean, FemIntegrator.SymplecticEuler, k)),
             new MethodVariant("FEM Neo-Hookean XPBD", "substeps", new[] { 64 }, new int[0],

@@ -24,10 +24,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public readonly Func<MethodBodySetup, int, float, IMethodBody> Create;
         /// <summary>Particles of a body of the setup (the mesh's nodes unless the method adds its own, as quadratic elements do).</summary>
         public readonly Func<MethodBodySetup, int> ParticleCount;
+        /// <summary>Knob values of the default run (a subset of <see cref="Knobs"/>; empty = the method runs in --full only).</summary>
+        public readonly int[] StandardKnobs;
 
         public MethodVariant(string family, string knobUnit, int[] knobs, int[] quickKnobs, Func<MethodBodySetup, int, float, IMethodBody> create,
-            int[] resolutions = null, int standardMaxResolution = 0, Func<MethodBodySetup, int> particleCount = null)
+            int[] resolutions = null, int standardMaxResolution = 0, Func<MethodBodySetup, int> particleCount = null, int[] standardKnobs = null)
         {
+            StandardKnobs = standardKnobs ?? knobs;
             ParticleCount = particleCount ?? (s => s.Mesh.NodeCount);
             StandardMaxResolution = standardMaxResolution;
             Family = family;

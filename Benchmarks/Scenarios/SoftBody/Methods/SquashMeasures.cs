@@ -178,11 +178,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return weights;
         }
 
-        /// <summary>Distance (m) between the <paramref name="top"/>- and <paramref name="bottom"/>-weighted centroids of <paramref name="x"/>.</summary>
+        /// <summary>
+        /// Distance (m) between the <paramref name="top"/>- and <paramref name="bottom"/>-weighted centroids of <paramref name="x"/>
+        /// (weights per mesh node; a body's extra nodes after them, as quadratic elements' edge nodes, weigh nothing).
+        /// </summary>
         public static double Height(ReadOnlySpan<float3> x, double[] top, double[] bottom)
         {
             double tx = 0, ty = 0, tz = 0, bx = 0, by = 0, bz = 0, tw = 0, bw = 0;
-            for (int i = 0; i < x.Length; i++)
+            for (int i = 0; i < top.Length; i++)
             {
                 tx += top[i] * x[i].x; ty += top[i] * x[i].y; tz += top[i] * x[i].z; tw += top[i];
                 bx += bottom[i] * x[i].x; by += bottom[i] * x[i].y; bz += bottom[i] * x[i].z; bw += bottom[i];

@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public virtual int StandardMaxResolution(MethodVariant variant) => variant.StandardMaxResolution;
 
         /// <summary>Knob values of a variant in the default run: all of the variant's, which a scene where they only diverge at great cost leaves out.</summary>
-        public virtual int[] StandardKnobs(MethodVariant variant) => variant.Knobs;
+        public virtual int[] StandardKnobs(MethodVariant variant) => variant.StandardKnobs;
 
         /// <summary>True for the explicit FEM variants, which diverge on the beams at the study's substep counts.</summary>
         protected static bool IsExplicitFem(MethodVariant variant) =>
