@@ -17,5 +17,10 @@ namespace SoftBodyDynamics.Solvers
         public int Contacts;
         /// <summary>Substeps the step took.</summary>
         public int Substeps;
+        /// <summary>
+        /// The parameters held an invalid or out-of-range value, which the step replaced (NaN, negative or otherwise invalid →
+        /// the default; beyond a limit → the limit). Bake-time validation reports the same values as errors.
+        /// </summary>
+        public bool ParametersReplaced;
     }
 }

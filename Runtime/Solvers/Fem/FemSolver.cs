@@ -108,6 +108,7 @@ namespace SoftBodyDynamics.Solvers
                     colorElements, stiffness, rotations, work, slots, multipliers, tangents, warmStart, elementNodes, pointGradients,
                     pointVolumes, factorNodes, factorRowStarts, factorValues, model, state, p, integrator, beta);
                 report.Step = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
+                report.Step.ParametersReplaced = SanitizedParameters.Differ(parameters, p);
                 report.MaxCgIterations = stage.MaxCgIterations;
                 report.TotalCgIterations = stage.TotalCgIterations;
                 report.CgConverged = stage.CgConverged;

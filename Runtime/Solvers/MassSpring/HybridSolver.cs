@@ -54,7 +54,9 @@ namespace SoftBodyDynamics.Solvers
                         clusters, stateQuadratic, shapeModel, shapeState, sp),
                     new MassSpringSolveStage(springRest, springMasses, inverseMasses, springs, incidenceOffsets, slots, colorOffsets,
                         colorSprings, scratch, springScratch, springModel.ParticleCount, springModel.SpringCount, springModel.ColorCount, mp));
-                return ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
+                ParticleStepReport report = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
+                report.ParametersReplaced = SanitizedParameters.Differ(shapeParameters, sp) || SanitizedParameters.Differ(springParameters, mp);
+                return report;
             }
         }
     }

@@ -60,7 +60,9 @@ namespace SoftBodyDynamics.Solvers
             {
                 var stage = new MassSpringSolveStage(rest, masses, inverseMasses, springs, offsets, slots, colorOffsets, colorSprings,
                     scratch, springScratch, model.ParticleCount, model.SpringCount, model.ColorCount, p) { Batch = batch };
-                return ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
+                ParticleStepReport report = ParticleBodyStep.Step(ref stage, body, constants, colliders, ref status);
+                report.ParametersReplaced = SanitizedParameters.Differ(parameters, p);
+                return report;
             }
         }
 

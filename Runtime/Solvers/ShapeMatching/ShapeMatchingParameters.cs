@@ -63,16 +63,18 @@ namespace SoftBodyDynamics.Solvers
         public int RotationIterations;
 
         /// <summary>
-        /// A copy the step can trust: NaN or out-of-range values are replaced by the nearest valid value
-        /// (or the default where none is nearer). Authoring reports such values as errors before they get
-        /// here (<c>ShapeMatchingParameterValidation</c>); this only keeps the simulation from exploding.
+        /// A copy the step can trust, by the rule every method's step follows: a value beyond a limit becomes the limit; any
+        /// other invalid value (NaN, a negative frequency or damping ratio) becomes the default, never a different valid
+        /// value (a negative frequency is not 0 Hz, which would let the body collapse). The step reports the replacement
+        /// (<see cref="ShapeMatchingStepReport.ParametersReplaced"/>); authoring reports the values as errors first
+        /// (<c>ShapeMatchingParameterValidation</c>).
         /// </summary>
         public ShapeMatchingParameters Sanitized()
         {
             var d = Default;
             var p = this;
-            p.Frequency = math.isfinite(Frequency) ? math.clamp(Frequency, 0f, MaxFrequency) : d.Frequency;
-            p.DampingRatio = math.isfinite(DampingRatio) ? math.clamp(DampingRatio, 0f, MaxDampingRatio) : d.DampingRatio;
+            p.Frequency = Frequency >= 0f && !math.isnan(Frequency) ? math.min(Frequency, MaxFrequency) : d.Frequency;
+            p.DampingRatio = DampingRatio >= 0f && !math.isnan(DampingRatio) ? math.min(DampingRatio, MaxDampingRatio) : d.DampingRatio;
             p.Beta = math.isnan(Beta) ? d.Beta : math.clamp(Beta, 0f, MaxBeta);
             p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
             p.Substeps = math.clamp(Substeps, 1, MaxSubsteps);

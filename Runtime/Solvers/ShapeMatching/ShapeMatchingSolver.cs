@@ -89,6 +89,7 @@ namespace SoftBodyDynamics.Solvers
                     Contacts = r.Contacts, Substeps = r.Substeps, Fallbacks = stage.Fallbacks,
                     MaxRotationIterations = stage.MaxRotationIterations, PlasticUpdates = stage.PlasticUpdates,
                     PlasticityUnavailable = stage.PlasticityUnavailable,
+                    ParametersReplaced = SanitizedParameters.Differ(parameters, p),
                 };
             }
         }

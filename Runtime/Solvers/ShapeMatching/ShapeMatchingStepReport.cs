@@ -28,5 +28,7 @@ namespace SoftBodyDynamics.Solvers
         /// rewrite, so the rest shape did not flow (allocate <see cref="ShapeMatchingState.QuadraticInverse"/>).
         /// </summary>
         public bool PlasticityUnavailable;
+        /// <summary>See <see cref="ParticleStepReport.ParametersReplaced"/>.</summary>
+        public bool ParametersReplaced;
     }
 }
