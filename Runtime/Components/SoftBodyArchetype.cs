@@ -101,7 +101,7 @@ namespace SoftBodyDynamics
         /// <summary>
         /// The simulation components of a finite-element body (shared as <see cref="WriteMassSpring"/> is):
         /// <see cref="FemShape"/>, <see cref="FemSettings"/>, <see cref="FemDiagnostics"/>, the
-        /// <see cref="FemElementRotation"/> buffer and the particle-body components.
+        /// <see cref="FemElementRotation"/> and <see cref="FemWarmStart"/> buffers and the particle-body components.
         /// </summary>
         public static void WriteFem(ISoftBodyEntityWriter writer, BlobAssetReference<FemShapeBlob> shape, in FemParameters parameters)
         {
