@@ -77,11 +77,7 @@ namespace SoftBodyDynamics.Solvers
                 if (!model.IsQuadratic)
                 {
                     TetElement element = model.Elements[e];
-                    float3x3 gt = math.transpose(element.InverseRestShape);
-                    corner[0] = -(gt.c0 + gt.c1 + gt.c2);
-                    corner[1] = gt.c0;
-                    corner[2] = gt.c1;
-                    corner[3] = gt.c2;
+                    TetElement.CornerGradients(element.InverseRestShape, corner);
                     AddTerms(corner, element.RestVolume, new float3x3(rotations[e]), mu, volumetric, offDiagonal, elementSlots);
                     continue;
                 }

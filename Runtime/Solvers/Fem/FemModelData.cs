@@ -206,12 +206,7 @@ namespace SoftBodyDynamics.Solvers
                 float volume = math.determinant(dm) / 6f;
                 float3x3 dmInv = math.inverse(dm);
                 data.Elements[t] = new TetElement { Nodes = tet, InverseRestShape = dmInv, RestVolume = volume };
-                // Shape-function gradients: ∇N₁..₃ = rows of Dm⁻¹, ∇N₀ = −Σ.
-                float3x3 g = math.transpose(dmInv);
-                cornerGradients[0] = -(g.c0 + g.c1 + g.c2);
-                cornerGradients[1] = g.c0;
-                cornerGradients[2] = g.c1;
-                cornerGradients[3] = g.c2;
+                TetElement.CornerGradients(dmInv, cornerGradients);
                 float mass = material.Density * volume;
                 if (!quadratic)
                 {

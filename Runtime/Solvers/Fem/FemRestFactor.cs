@@ -221,11 +221,7 @@ namespace SoftBodyDynamics.Solvers
                     else
                     {
                         TetElement element = model.Elements[e];
-                        float3x3 gt = math.transpose(element.InverseRestShape);
-                        g[0] = -(gt.c0 + gt.c1 + gt.c2);
-                        g[1] = gt.c0;
-                        g[2] = gt.c1;
-                        g[3] = gt.c2;
+                        TetElement.CornerGradients(element.InverseRestShape, g);
                         volume = element.RestVolume;
                     }
                     for (int x = 0; x < perElement; x++)

@@ -15,5 +15,15 @@ namespace SoftBodyDynamics.Solvers
         public float3x3 InverseRestShape;
         /// <summary>Rest volume V = det(Dm) / 6 (m³), &gt; 0.</summary>
         public float RestVolume;
+
+        /// <summary>The shape-function gradients at rest (1/m): ∇N₁..₃ = the rows of Dm⁻¹, ∇N₀ = −(∇N₁ + ∇N₂ + ∇N₃).</summary>
+        public static void CornerGradients(in float3x3 inverseRestShape, System.Span<float3> g)
+        {
+            float3x3 rows = math.transpose(inverseRestShape);
+            g[0] = -(rows.c0 + rows.c1 + rows.c2);
+            g[1] = rows.c0;
+            g[2] = rows.c1;
+            g[3] = rows.c2;
+        }
     }
 }
