@@ -57,17 +57,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"'…{MethodStudyStabilityScenario.DeviationSuffix}' = final shape deviation over the cube size.",
                 $"Default and quick runs: dt_max/2 and dt_max/4 are not run (for the explicit FEM models they are two thirds to nine tenths of the search's steps), so " +
                 $"'{MethodStudyStabilityScenario.BoundedBelow}' and '{MethodStudyStabilityScenario.Monotone}' read –; --full runs them. " +
-                "Quick run: only the methods with quick knob values in the catalog.",
+                "Quick run: only the methods with quick knob values in the catalog; default run: not the methods the catalog runs in --full only (Neo-Hookean quadratic FEM: its stable-step search takes ~40 s).",
             },
             Details = "choosing-a-method.md#stability-the-largest-stable-step-and-the-hard-cases-methodstudystability",
         };
 
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
-            bool quick = scope == RunScope.Quick;
-            // The quick run keeps the methods the catalog keeps in its quick run (those with quick knob values).
+            bool quick = scope == RunScope.Quick, standard = scope == RunScope.Standard;
+            // The quick run keeps the methods the catalog keeps in its quick run (those with quick knob values), the default
+            // run those it runs by default (the --full-only methods have no default knob values).
             foreach (MethodVariant v in MethodCatalog.Variants)
-                if (!quick || v.QuickKnobs.Length > 0)
+                if ((!quick || v.QuickKnobs.Length > 0) && (!standard || v.StandardKnobs.Length > 0))
                     yield return new MethodStudyStabilityScenario(() => Cube, v, checkBelow: scope == RunScope.Full);
         }
 
