@@ -11,9 +11,8 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         /// <summary>
         /// A Jelly body resting on the floor, in linear and in quadratic mode with the same material. Neither mode's
-        /// goals may follow a change of volume to first order: the linear goal R + β(Ã − R) has det ≥ 1 (det Ã = 1, and
-        /// log det is concave along the blend), and the quadratic goal has the cluster's dilation removed from its
-        /// β part. Both bodies then lose the same first-order volume to their weight (the particles hang g/ω² below
+        /// goals may follow a change of volume to first order: in both the volume energy's gradient cancels the β part's
+        /// share of a dilation (a dilation e gives β e from the fit and −(β/9)(3e)·3 = −β e from the volume term). Both bodies then lose the same first-order volume to their weight (the particles hang g/ω² below
         /// their goals). What the quadratic goal can miss is second order: a linear block with principal strains eᵢ of
         /// zero sum has volume Π(1 + eᵢ) = 1 − ½Σeᵢ² + e₁e₂e₃ ≥ 1 − ε² − ε³/4 for |eᵢ| ≤ ε. With ε the largest
         /// principal strain of the resting linear body (its best-fit linear map F, |σᵢ(F) − 1|), the quadratic body's
