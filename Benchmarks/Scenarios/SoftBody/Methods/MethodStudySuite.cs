@@ -47,7 +47,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             foreach (MethodVariant v in MethodCatalog.Variants)
             foreach (int resolution in v.ResolutionsOf(scope, m_Scene.MaxResolution, m_Scene.StandardMaxResolution(v)))
-            foreach (int knob in scope == RunScope.Quick ? v.QuickKnobs : scope == RunScope.Standard ? m_Scene.StandardKnobs(v) : v.Knobs)
+            foreach (int knob in scope == RunScope.Quick ? v.QuickKnobs : scope == RunScope.Standard ? m_Scene.StandardKnobs(v) : m_Scene.FullKnobs(v, resolution))
                 yield return new MethodStudyScenario(m_Scene, v, knob, resolution);
         }
 

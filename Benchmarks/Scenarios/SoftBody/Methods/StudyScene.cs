@@ -48,6 +48,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Knob values of a variant in the default run: all of the variant's, which a scene where they only diverge at great cost leaves out.</summary>
         public virtual int[] StandardKnobs(MethodVariant variant) => variant.StandardKnobs;
 
+        /// <summary>Knob values of a variant at a resolution in the full run: the variant's, to which a scene may add the points its question needs.</summary>
+        public virtual int[] FullKnobs(MethodVariant variant, int resolution) => variant.Knobs;
+
         /// <summary>True for the explicit FEM variants, which diverge on the beams at the study's substep counts.</summary>
         protected static bool IsExplicitFem(MethodVariant variant) =>
             variant.Family.StartsWith("FEM", StringComparison.Ordinal) && variant.Family.EndsWith("explicit", StringComparison.Ordinal);
