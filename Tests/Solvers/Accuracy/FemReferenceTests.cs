@@ -11,7 +11,8 @@ namespace SoftBodyDynamics.Tests.Solvers
     /// </summary>
     public class FemReferenceTests
     {
-        static readonly FemMaterialLaw[] Laws = { FemMaterialLaw.NeoHookean, FemMaterialLaw.StVenantKirchhoff };
+        static readonly FemMaterialLaw[] Laws = { FemMaterialLaw.NeoHookean, FemMaterialLaw.StVenantKirchhoff, FemMaterialLaw.StableNeoHookean };
+        static readonly FemMaterialLaw[] NeoHookeanLaws = { FemMaterialLaw.NeoHookean, FemMaterialLaw.StableNeoHookean };
 
         /// <summary>
         /// Patch test: u = (F₀ − I)X on every node of a 2 × 2 × 2 box gives F = F₀ at every Gauss point (Q2 reproduces
@@ -264,28 +265,63 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         /// <summary>
-        /// Uniaxial Neo-Hookean: the nominal stress is dΨ/dλ along the curve (central difference, step 1e-5: truncation
-        /// ~1e-10 E, round-off 1e-16 Ψ/1e-5), lateral traction is zero, and small stretch gives Young's modulus.
+        /// Uniaxial Neo-Hookean (both laws): the nominal stress is dΨ/dλ along the curve (central difference, step 1e-5:
+        /// truncation ~1e-10 E, round-off 1e-16 Ψ/1e-5), lateral traction is zero, and small stretch gives Young's modulus.
         /// </summary>
-        [Test]
-        public void UniaxialNeoHookean_StressIsEnergyDerivative()
+        [TestCaseSource(nameof(NeoHookeanLaws))]
+        public void UniaxialNeoHookean_StressIsEnergyDerivative(FemMaterialLaw law)
         {
             const double e = 2e5, nu = 0.45, step = 1e-5;
             foreach (double stretch in new[] { 0.5, 0.8, 1.0, 1.3, 2.0 })
             {
-                UniaxialResult r = UniaxialNeoHookean.Stress(stretch, e, nu);
-                double derivative = (UniaxialNeoHookean.Stress(stretch + step, e, nu).Energy - UniaxialNeoHookean.Stress(stretch - step, e, nu).Energy) / (2 * step);
+                UniaxialResult r = UniaxialNeoHookean.Stress(stretch, e, nu, law);
+                double derivative = (UniaxialNeoHookean.Stress(stretch + step, e, nu, law).Energy -
+                                     UniaxialNeoHookean.Stress(stretch - step, e, nu, law).Energy) / (2 * step);
                 Assert.That(r.NominalStress, Is.EqualTo(derivative).Within(1e-7 * e), $"λ = {stretch}");
-                // Lateral traction P₂₂ = (μ(s² − 1) + λ ln J)/s of the full material.
-                var m = new FemMaterial(FemMaterialLaw.NeoHookean, e, nu);
+                // Lateral traction P₂₂ of the full material, and its energy.
+                var m = new FemMaterial(law, e, nu);
                 double s = r.LateralStretch;
                 var p = new double[9];
-                m.Evaluate(new[] { stretch - 1, 0, 0, 0, s - 1, 0, 0, 0, s - 1 }, p, Span<double>.Empty, out _);
+                m.Evaluate(new[] { stretch - 1, 0, 0, 0, s - 1, 0, 0, 0, s - 1 }, p, Span<double>.Empty, out double energy);
                 Assert.That(p[4], Is.EqualTo(0).Within(1e-9 * e));
                 Assert.That(p[0], Is.EqualTo(r.NominalStress).Within(1e-9 * e));
+                Assert.That(energy, Is.EqualTo(r.Energy).Within(1e-9 * e));
+                Assert.That(r.VolumeRatio, Is.EqualTo(stretch * s * s).Within(1e-15 * r.VolumeRatio));
             }
             // Linear limit: P = E ε + O(ε²), ε = 1e-4.
-            Assert.That(UniaxialNeoHookean.Stress(1 + 1e-4, e, nu).NominalStress / (e * 1e-4), Is.EqualTo(1).Within(1e-3));
+            Assert.That(UniaxialNeoHookean.Stress(1 + 1e-4, e, nu, law).NominalStress / (e * 1e-4), Is.EqualTo(1).Within(1e-3));
+        }
+
+        /// <summary>
+        /// The reference's stable law is the package's Neo-Hookean element law: P of <see cref="FemMaterial"/> (float64)
+        /// against <see cref="SoftBodyDynamics.Solvers.FemElasticity.NeoHookeanStress"/> (float32, λ_snh = λ + μ) at finite
+        /// strains, one in 50 % compression. The float32 stress cancels μF against λ(J − α) cof F, terms of size ≤ λ'|cof F|
+        /// ~ 5E at these strains, so its round-off is ~1e-6 of 5E; bound 1e-5 E.
+        /// </summary>
+        [Test]
+        public void StableNeoHookean_IsThePackagesNeoHookeanStress()
+        {
+            const double e = 1e4, nu = 0.45;
+            var m = new FemMaterial(FemMaterialLaw.StableNeoHookean, e, nu);
+            float mu = (float)m.Mu, lambda = SoftBodyDynamics.Solvers.FemElasticity.NeoHookeanLambda((float)m.Mu, (float)m.Lambda);
+            double[][] strains =
+            {
+                new[] { 0.2, -0.1, 0.05, 0.15, -0.25, 0.1, -0.05, 0.08, 0.3 },
+                new[] { 0.34, 0, 0, 0, -0.5, 0, 0, 0, 0.34 },
+            };
+            foreach (double[] h in strains)
+            {
+                var p = new double[9];
+                m.Evaluate(h, p, Span<double>.Empty, out _);
+                var f = new Unity.Mathematics.float3x3(
+                    (float)(1 + h[0]), (float)h[1], (float)h[2],
+                    (float)h[3], (float)(1 + h[4]), (float)h[5],
+                    (float)h[6], (float)h[7], (float)(1 + h[8]));
+                Unity.Mathematics.float3x3 q = SoftBodyDynamics.Solvers.FemElasticity.NeoHookeanStress(f, mu, lambda);
+                for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    Assert.That(q[j][i], Is.EqualTo(p[3 * i + j]).Within(1e-5 * e), $"P[{i},{j}]");
+            }
         }
     }
 }

@@ -9,6 +9,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         NeoHookean,
         /// <summary>St Venant–Kirchhoff: Ψ = λ/2 (tr E)² + μ E:E, E = (FᵀF − I)/2 (the Turek–Hron CSM law).</summary>
         StVenantKirchhoff,
+        /// <summary>
+        /// Stable Neo-Hookean, the package's Neo-Hookean law (Smith, de Goes &amp; Kim 2018, eq. 14 without the log term):
+        /// Ψ = μ/2 (I_C − 3) + λ'/2 ((J − α)² − (1 − α)²), λ' = λ + μ, α = 1 + μ/λ'. In tension it follows the compressible law
+        /// to 0.1 % of the stress up to stretch 1.5; in a 50 % squash its volume is 1.4 % smaller.
+        /// </summary>
+        StableNeoHookean,
     }
 
     /// <summary>
@@ -20,10 +26,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <list type="bullet">
     /// <item>Neo-Hookean: P = μ(F − F⁻ᵀ) + λ ln J F⁻ᵀ = (μ(b − I) + λ ln J I) F⁻ᵀ, b = F Fᵀ;
     /// 𝔸_iJkL = μ δ_ik δ_JL + (μ − λ ln J) F⁻ᵀ_iL F⁻ᵀ_kJ + λ F⁻ᵀ_iJ F⁻ᵀ_kL.</item>
+    /// <item>Stable Neo-Hookean: P = μ(F − cof F) + λ'(J − 1) cof F, cof F = J F⁻ᵀ (from H: I − cof F = Hᵀ − tr H I − cof H);
+    /// 𝔸_iJkL = μ δ_ik δ_JL + λ' cof_iJ cof_kL + (λ'(J − 1) − μ) ε_ikm ε_JLN F_mN.</item>
     /// <item>St Venant–Kirchhoff: S = λ tr(E) I + 2μE, P = F S;
     /// 𝔸_iJkL = δ_ik S_JL + λ F_iJ F_kL + μ (F Fᵀ)_ik δ_JL + μ F_iL F_kJ.</item>
     /// </list>
-    /// Both reduce to linear elasticity with Lamé constants (λ, μ) at F = I.
+    /// All reduce to linear elasticity with Lamé constants (λ, μ) at F = I.
     /// </summary>
     public readonly struct FemMaterial
     {
@@ -60,9 +68,76 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Span<double> f = stackalloc double[9];
             h.CopyTo(f);
             f[0] += 1; f[4] += 1; f[8] += 1;
-            return Law == FemMaterialLaw.NeoHookean
-                ? NeoHookean(h, f, p, tangent, out energy, tangentDimension)
-                : StVenantKirchhoff(h, f, p, tangent, out energy, tangentDimension);
+            switch (Law)
+            {
+                case FemMaterialLaw.NeoHookean:
+                    return NeoHookean(h, f, p, tangent, out energy, tangentDimension);
+                case FemMaterialLaw.StableNeoHookean:
+                    StableNeoHookean(h, f, p, tangent, out energy, tangentDimension);
+                    return true;
+                default:
+                    return StVenantKirchhoff(h, f, p, tangent, out energy, tangentDimension);
+            }
+        }
+
+        /// <summary>J − 1 of F = I + H without cancellation: tr H + ½((tr H)² − tr H²) + det H.</summary>
+        static double VolumeChange(ReadOnlySpan<double> h)
+        {
+            double trH = h[0] + h[4] + h[8];
+            double trH2 = 0;
+            for (int i = 0; i < 3; i++)
+            for (int k = 0; k < 3; k++)
+                trH2 += h[3 * i + k] * h[3 * k + i];
+            double detH = h[0] * (h[4] * h[8] - h[5] * h[7]) - h[1] * (h[3] * h[8] - h[5] * h[6]) + h[2] * (h[3] * h[7] - h[4] * h[6]);
+            return trH + 0.5 * (trH * trH - trH2) + detH;
+        }
+
+        /// <summary>Cofactor matrix of the 3×3 row-major <paramref name="m"/> into <paramref name="c"/> (cof M = det M · M⁻ᵀ).</summary>
+        static void Cofactor(ReadOnlySpan<double> m, Span<double> c)
+        {
+            c[0] = m[4] * m[8] - m[5] * m[7]; c[1] = m[5] * m[6] - m[3] * m[8]; c[2] = m[3] * m[7] - m[4] * m[6];
+            c[3] = m[2] * m[7] - m[1] * m[8]; c[4] = m[0] * m[8] - m[2] * m[6]; c[5] = m[1] * m[6] - m[0] * m[7];
+            c[6] = m[1] * m[5] - m[2] * m[4]; c[7] = m[2] * m[3] - m[0] * m[5]; c[8] = m[0] * m[4] - m[1] * m[3];
+        }
+
+        /// <summary>ε_ijk (i, j, k in 0..2).</summary>
+        static int Permutation(int i, int j, int k) => (i - j) * (j - k) * (k - i) / 2;
+
+        void StableNeoHookean(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy, int d)
+        {
+            double lambda = Lambda + Mu;
+            double jm1 = VolumeChange(h);
+            double trH = h[0] + h[4] + h[8], hh = 0;
+            for (int n = 0; n < 9; n++)
+                hh += h[n] * h[n];
+            Span<double> cofF = stackalloc double[9];
+            Span<double> cofH = stackalloc double[9];
+            Cofactor(f, cofF);
+            Cofactor(h, cofH);
+            // P = μ(H + Hᵀ − tr H I − cof H) + λ'(J − 1) cof F.
+            for (int i = 0; i < 3; i++)
+            for (int jj = 0; jj < 3; jj++)
+                p[3 * i + jj] = Mu * (h[3 * i + jj] + h[3 * jj + i] - (i == jj ? trH : 0) - cofH[3 * i + jj]) + lambda * jm1 * cofF[3 * i + jj];
+            // Ψ = μ(tr H + H:H/2) + λ'/2 (J − 1)² − μ(J − 1), zero at rest.
+            energy = Mu * (trH + 0.5 * hh) + 0.5 * lambda * jm1 * jm1 - Mu * jm1;
+            if (a.IsEmpty)
+                return;
+            double c = lambda * jm1 - Mu;
+            for (int i = 0; i < d; i++)
+            for (int jj = 0; jj < d; jj++)
+            for (int k = 0; k < d; k++)
+            for (int l = 0; l < d; l++)
+            {
+                double v = lambda * cofF[3 * i + jj] * cofF[3 * k + l];
+                if (i == k && jj == l)
+                    v += Mu;
+                // ∂(cof F)_iJ/∂F_kL = ε_ikm ε_JLN F_mN.
+                double dCof = 0;
+                for (int m = 0; m < 3; m++)
+                for (int nn = 0; nn < 3; nn++)
+                    dCof += Permutation(i, k, m) * Permutation(jj, l, nn) * f[3 * m + nn];
+                a[9 * (3 * i + jj) + 3 * k + l] = v + c * dCof;
+            }
         }
 
         bool NeoHookean(ReadOnlySpan<double> h, ReadOnlySpan<double> f, Span<double> p, Span<double> a, out double energy, int d)

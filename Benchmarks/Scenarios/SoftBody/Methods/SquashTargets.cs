@@ -96,7 +96,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var clock = System.Diagnostics.Stopwatch.StartNew();
             double e = material.YoungsModulus, nu = material.PoissonRatio, rho = material.Density, size = SquashScene.Size;
             double stretch = SquashScene.Stretch;
-            UniaxialResult squashed = UniaxialNeoHookean.Stress(stretch, e, nu);
+            UniaxialResult squashed = UniaxialNeoHookean.Stress(stretch, e, nu, SquashReference.Law);
             var t = new SquashTargets
             {
                 LateralStretch = squashed.LateralStretch,
