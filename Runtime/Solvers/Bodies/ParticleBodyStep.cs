@@ -13,7 +13,8 @@ namespace SoftBodyDynamics.Solvers
     /// positions from the new velocities);</item>
     /// <item>predict (positions): x*ᵢ = xᵢ + h·vᵢ;</item>
     /// <item>collide: x* pushed out of colliders with friction and restitution, the push added to v
-    /// (<see cref="ContactProjection"/>);</item>
+    /// (<see cref="ContactProjection"/>); the contact normals are the next substep's input to a stage that holds contacts
+    /// in its solve (<see cref="ContactProjection.Settings.KeepTouching"/>; the step's first come from the positions);</item>
     /// <item>update: xᵢ = x*ᵢ.</item>
     /// </list>
     /// Around the substeps: a sleeping body is woken by a change of gravity, a velocity written from outside or a
@@ -72,6 +73,14 @@ namespace SoftBodyDynamics.Solvers
             var x = body.Positions;
             var v = body.Velocities;
             var predicted = body.Predicted;
+            // A stage that holds contacts in its solve reads each substep's contacts from the previous one; the first from the positions.
+            if (contact.KeepTouching)
+            {
+                if (colliders.Length > 0)
+                    ContactProjection.StartContacts(x, body.ContactNormals, colliders, contact);
+                else
+                    body.ContactNormals.Clear();
+            }
             for (int s = 0; s < constants.Substeps; s++)
             {
                 // Predict (velocities). The positions' rigid frame serves the damping and the solve alike.

@@ -45,7 +45,21 @@ namespace SoftBodyDynamics.Solvers
             /// particle by its nearest face, which would tear the body around the collider. Off for fluids.
             /// </summary>
             public bool WholeBody;
+            /// <summary>
+            /// The contact normals passed in are the previous substep's (the step's first from <see cref="StartContacts"/>):
+            /// a particle in contact then stays in contact (its normal kept, nothing pushed) while it is within
+            /// <see cref="TouchingDistance"/> outside a collider whose normal there is within 60° of the old one, and the
+            /// normals written are surface contacts only (none while the body leaves a collider it started in). A solver that
+            /// holds contact particles on the surface (<see cref="FemImplicitEuler"/>) would otherwise see every other contact vanish.
+            /// </summary>
+            public bool KeepTouching;
         }
+
+        /// <summary>
+        /// Gap (m) within which a particle in contact stays in contact under <see cref="Settings.KeepTouching"/>: above the
+        /// float32 resolution of positions 64 m from the origin (4 µm), below one substep's motion at 1 mm/s.
+        /// </summary>
+        public const float TouchingDistance = 1e-5f;
 
         /// <summary>Colliders that can have a shared leaving direction in one call; further ones push each particle on its own.</summary>
         public const int MaxSharedColliders = 32;
@@ -74,13 +88,20 @@ namespace SoftBodyDynamics.Solvers
             bool rebased = math.any(settings.Origin != float3.zero);
             Span<float3> leaving = stackalloc float3[MaxSharedColliders];
             leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
+            bool bodyLeaving = false;
             if (leaving.Length > 0)
+            {
                 LeavingDirections(previous, colliders, settings, leaving);
+                for (int c = 0; c < leaving.Length; c++)
+                    bodyLeaving |= math.lengthsq(leaving[c]) > 0f;
+            }
             for (int i = 0; i < predicted.Length; i++)
             {
                 float3 start = predicted[i];
                 float3 x = start;
                 float3 contactNormal = float3.zero;
+                float3 previousNormal = settings.KeepTouching ? contactNormals[i] : float3.zero;
+                bool surface = false; // pushed out of a surface (not only carried by the whole body's leave)
                 for (int c = 0; c < colliders.Length; c++)
                 {
                     ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
@@ -123,6 +144,7 @@ namespace SoftBodyDynamics.Solvers
                     if (!(depth > 0f))
                         continue;
                     x += depth * n;
+                    surface = true;
                     // Friction: cancel tangential motion of this substep, at most μ·depth.
                     float3 motion = x - previous[i];
                     float3 tangential = motion - math.dot(motion, n) * n;
@@ -132,7 +154,16 @@ namespace SoftBodyDynamics.Solvers
                         x -= tangential * math.min(1f, limit / slide);
                     contactNormal = n;
                 }
-                contactNormals[i] = contactNormal;
+                if (math.lengthsq(contactNormal) == 0f && math.lengthsq(previousNormal) > 0f)
+                {
+                    contactNormal = Touching(colliders, settings, x, previousNormal);
+                    contactNormals[i] = contactNormal;
+                    if (math.lengthsq(contactNormal) > 0f)
+                        contacts++;
+                    continue;
+                }
+                // Under KeepTouching the buffer holds resting surface contacts only: none while the body leaves a collider it started in.
+                contactNormals[i] = !settings.KeepTouching || (surface && !bodyLeaving) ? contactNormal : float3.zero;
                 if (math.lengthsq(contactNormal) == 0f)
                     continue;
                 contacts++;
@@ -148,6 +179,54 @@ namespace SoftBodyDynamics.Solvers
                 predicted[i] = x;
             }
             return contacts;
+        }
+
+        /// <summary>
+        /// The contacts a step starts with under <see cref="Settings.KeepTouching"/> (so that they need not be kept between
+        /// steps): each particle's normal of the first collider it overlaps or is within <see cref="TouchingDistance"/> of,
+        /// zero for the others; all zero while a particle is deeper than <see cref="Settings.MaxDepenetration"/> in a collider
+        /// (the body then leaves it as a whole, <see cref="Project"/>).
+        /// </summary>
+        public static void StartContacts(ReadOnlySpan<float3> positions, Span<float3> contactNormals, ReadOnlySpan<ColliderShape> colliders,
+            in Settings settings)
+        {
+            bool rebased = math.any(settings.Origin != float3.zero);
+            float reach = settings.Radius + TouchingDistance;
+            for (int i = 0; i < positions.Length; i++)
+            {
+                float3 normal = float3.zero;
+                for (int c = 0; c < colliders.Length; c++)
+                {
+                    ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                    if (!ParticleCollision.Penetration(collider, positions[i], reach, out float3 n, out float depth))
+                        continue;
+                    if (depth - TouchingDistance > settings.MaxDepenetration)
+                    {
+                        contactNormals.Clear();
+                        return;
+                    }
+                    if (math.lengthsq(normal) == 0f)
+                        normal = n;
+                }
+                contactNormals[i] = normal;
+            }
+        }
+
+        /// <summary>
+        /// The normal of the first collider within <see cref="TouchingDistance"/> of a particle at <paramref name="x"/> whose normal
+        /// there is within 60° of <paramref name="previousNormal"/>; zero when none.
+        /// </summary>
+        static float3 Touching(ReadOnlySpan<ColliderShape> colliders, in Settings settings, float3 x, float3 previousNormal)
+        {
+            bool rebased = math.any(settings.Origin != float3.zero);
+            for (int c = 0; c < colliders.Length; c++)
+            {
+                ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                if (ParticleCollision.Penetration(collider, x, settings.Radius + TouchingDistance, out float3 n, out _)
+                    && math.dot(n, previousNormal) > 0.5f)
+                    return n;
+            }
+            return float3.zero;
         }
 
         /// <summary>How deep (m) a particle at <paramref name="x"/> overlaps the collider; 0 when it does not.</summary>

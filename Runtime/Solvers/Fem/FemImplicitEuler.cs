@@ -15,6 +15,18 @@ namespace SoftBodyDynamics.Solvers
     /// in h). The velocities on entry already hold the substep's gravity (the shared step adds it first), which is the
     /// same system with f + Mg.
     /// <para>
+    /// Frictionless contacts enter the solve (the caller passes them only when μ = 0): a node in contact at the end of the
+    /// previous substep (normal n in the contact buffer) ends the substep with no normal velocity, n·(v + Δv) = 0, the
+    /// collider carrying the normal component of its equation (CG filtered by Sᵢ = I − n nᵀ from Δv₀ = −(n·v) n,
+    /// Baraff &amp; Witkin 1998, §5.3); its tangential motion and the body's other nodes are solved with it held. A node whose
+    /// collider would have to pull (n·(A Δv − b)ᵢ &gt; 0) is released and the solve continues. Without this, the elastic push
+    /// of a pressed body moves its interior freely while only the contact nodes are pushed back after the solve: a jelly cube
+    /// squashed to half its height between frictionless plates settles 12 % fuller than its equilibrium (Neo-Hookean, one
+    /// 1/60 s substep). With friction the contact nodes are pushed out after the solve, as in the other integrators:
+    /// Coulomb friction on held nodes needs a stick/slide split, and the post-solve one at the solve's impulses locks
+    /// bodies that a collider squeezes.
+    /// </para>
+    /// <para>
     /// Co-rotational: one linearly implicit step (Baraff &amp; Witkin 1998, eq. 6) on the warped stiffness
     /// K_R = R K₀ Rᵀ (Müller &amp; Gross 2004), forces and K_R at x:
     /// <c>(M + h C + h² K_R) Δv = h (f − (β + h) K_R v)</c>.
@@ -52,18 +64,22 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="scratch">Scratch, one per node.</param>
         /// <param name="work">Scratch, <see cref="FemState.WorkVectors"/> per node.</param>
         /// <param name="warmStart">Per node: the previous substep's Δv, the first guess of this one's (updated); empty = start from 0.</param>
+        /// <param name="contacts">Per node: the contact normal of the previous substep (zero: free); a node the solve releases is set to zero. Empty = no contacts.</param>
         /// <param name="newtonIterations">Neo-Hookean: Newton iterations (clamped to 1 … <see cref="MaxNewtonIterations"/>). The co-rotational model takes one linear step.</param>
         /// <param name="converged">True when every CG solve reached ‖r‖ ≤ <paramref name="tolerance"/> ‖b‖.</param>
         /// <param name="residual">The largest relative residual ‖r‖/‖b‖ a CG solve of the substep ended at (0 when none ran).</param>
         /// <param name="inverted">Elements with det F ≤ 0 at x.</param>
         public static int Solve(in FemModel model, FemMaterialModel materialModel, ReadOnlySpan<float3> x, Span<float3> v,
             Span<quaternion> rotations, Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch,
-            Span<float3> work, Span<float3> warmStart, float h, float beta, int newtonIterations, int maxIterations, float tolerance,
-            out bool converged, out float residual, out int inverted)
+            Span<float3> work, Span<float3> warmStart, Span<float3> contacts, float h, float beta, int newtonIterations, int maxIterations,
+            float tolerance, out bool converged, out float residual, out int inverted)
         {
+            if (!AnyContact(contacts, model.InverseMasses))
+                contacts = default;
             if (materialModel == FemMaterialModel.NeoHookean)
-                return SolveNeoHookean(model, x, v, rotations, tangents, rotationIterations, slots, scratch, work, warmStart, h, beta,
-                    math.clamp(newtonIterations, 1, MaxNewtonIterations), maxIterations, tolerance, out converged, out residual, out inverted);
+                return SolveNeoHookean(model, x, v, rotations, tangents, rotationIterations, slots, scratch, work, warmStart, contacts, h,
+                    beta, math.clamp(newtonIterations, 1, MaxNewtonIterations), maxIterations, tolerance, out converged, out residual,
+                    out inverted);
 
             int n = x.Length, elements = model.ElementCount;
             Span<float3> dv = work.Slice(0, n), b = work.Slice(n, n);
@@ -79,9 +95,10 @@ namespace SoftBodyDynamics.Solvers
             for (int i = 0; i < n; i++)
                 b[i] = w[i] > 0f ? h * (forces[i] + (beta + h) * b[i]) : float3.zero;
             PreparePreconditioner(model, rotations, slots, work, c);
-            int iterations = ConjugateGradient(model, false, rotations, default, slots, work, warmStart, c, maxIterations, tolerance,
-                out converged, out residual);
-            RemoveMomentumError(dv, m, w);
+            int iterations = ConjugateGradient(model, false, rotations, default, slots, work, warmStart, contacts, v, c, maxIterations,
+                tolerance, out converged, out residual);
+            if (contacts.IsEmpty)
+                RemoveMomentumError(dv, m, w);
             for (int i = 0; i < n; i++)
                 v[i] += dv[i];
             if (warmStart.Length == n)
@@ -92,8 +109,8 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The Newton iterations of the Neo-Hookean model (see the class comment).</summary>
         static int SolveNeoHookean(in FemModel model, ReadOnlySpan<float3> x, Span<float3> v, Span<quaternion> rotations,
             Span<float3> tangents, int rotationIterations, Span<float3> slots, Span<float3> scratch, Span<float3> work,
-            Span<float3> warmStart, float h, float beta, int newtonIterations, int maxIterations, float tolerance, out bool converged,
-            out float residual, out int inverted)
+            Span<float3> warmStart, Span<float3> contacts, float h, float beta, int newtonIterations, int maxIterations, float tolerance,
+            out bool converged, out float residual, out int inverted)
         {
             int n = x.Length, elements = model.ElementCount;
             Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), q = work.Slice(4 * n, n);
@@ -126,12 +143,13 @@ namespace SoftBodyDynamics.Solvers
                 if (!(bb > 0f))
                     break; // at the solution (or a non-finite state the guard will catch)
                 PreparePreconditioner(model, rotations, slots, work, c);
-                iterations += ConjugateGradient(model, true, rotations, tangents, slots, work, k == 0 ? warmStart : default, c,
+                iterations += ConjugateGradient(model, true, rotations, tangents, slots, work, k == 0 ? warmStart : default, contacts, v, c,
                     maxIterations, tolerance, out bool solved, out float reached);
                 converged &= solved;
                 residual = math.max(residual, reached);
-                RemoveMomentumError(dv, m, w);
-                float step = LineSearch(model, x, v, dv, accumulated, rotations, tangents, slots, q, h, beta);
+                if (contacts.IsEmpty)
+                    RemoveMomentumError(dv, m, w);
+                float step = LineSearch(model, x, v, dv, accumulated, rotations, tangents, slots, q, h, beta, HeldWork(contacts, r, dv));
                 for (int i = 0; i < n; i++)
                 {
                     float3 change = step * dv[i];
@@ -146,12 +164,13 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// The first s = 1, ½, ¼, … (at most <see cref="MaxLineSearchHalvings"/> halvings) with Φ(v_k + s δ) ≤ Φ(v_k):
-        /// ΔΦ(s) = s δᵀM(v_k − v) + s²/2 δᵀMδ + h β (s v_kᵀKδ + s²/2 δᵀKδ) + Σ_e V ΔΨ_e(s), the quadratic terms from one
+        /// ΔΦ(s) = s δᵀM(v_k − v) + s²/2 δᵀMδ + h β (s v_kᵀKδ + s²/2 δᵀKδ) + Σ_e V ΔΨ_e(s) (− s fᵀδ with held contacts,
+        /// <see cref="HeldWork"/>), the quadratic terms from one
         /// product K δ (into <paramref name="q"/>), the elastic one per element. Sums in double, in node and element order.
         /// </summary>
         static float LineSearch(in FemModel model, ReadOnlySpan<float3> x, ReadOnlySpan<float3> v, ReadOnlySpan<float3> dv,
             ReadOnlySpan<float3> accumulated, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents, Span<float3> slots,
-            Span<float3> q, float h, float beta)
+            Span<float3> q, float h, float beta, double heldWork)
         {
             int n = model.ParticleCount, elements = model.ElementCount;
             ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
@@ -166,7 +185,7 @@ namespace SoftBodyDynamics.Solvers
                 dKd -= math.dot(dv[i], q[i]);
                 vKd -= math.dot(v[i], q[i]);
             }
-            double linear = dMa + h * beta * vKd, quadratic = 0.5 * (dMd + h * beta * dKd);
+            double linear = dMa + h * beta * vKd + heldWork, quadratic = 0.5 * (dMd + h * beta * dKd);
             float step = 1f;
             for (int halving = 0; halving < MaxLineSearchHalvings; halving++)
             {
@@ -188,6 +207,20 @@ namespace SoftBodyDynamics.Solvers
             return step;
         }
 
+        /// <summary>
+        /// Σ rᵢ·δᵢ over the held nodes: −fᵀδ, the work of the colliders' impulses f = −r along the step. With it the line search's
+        /// ΔΦ(s) − s fᵀδ is a merit function of the constrained step (its slope at 0 is −δᵀAδ &lt; 0); without it the held
+        /// targets, which raise Φ, would shorten every step.
+        /// </summary>
+        static double HeldWork(ReadOnlySpan<float3> contacts, ReadOnlySpan<float3> r, ReadOnlySpan<float3> dv)
+        {
+            double work = 0.0;
+            for (int i = 0; i < contacts.Length; i++)
+                if (math.lengthsq(contacts[i]) > 0f)
+                    work += math.dot(r[i], dv[i]);
+            return work;
+        }
+
         /// <summary>q = −K u gathered per node (K of the model: warped, or the stored Neo-Hookean tangents).</summary>
         static void Stiffness(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
             ReadOnlySpan<float3> u, Span<float3> slots, Span<float3> q)
@@ -205,86 +238,168 @@ namespace SoftBodyDynamics.Solvers
         /// rest factor and the guess's residual is smaller than ‖b‖, else from 0; z, p, q
         /// in its third to fifth, the preconditioner's blocks in its last two (<see cref="FemBlockJacobi"/>). Stops at
         /// ‖r‖ ≤ tolerance ‖b‖ (<paramref name="converged"/>), after <paramref name="maxIterations"/>, or when pᵀAp ≤ 0.
+        /// With <paramref name="contacts"/>: the filtered iteration of the class comment from the held nodes' target (no warm
+        /// start; r and b measured through S, the normal parts of r left unfiltered so that they hold the colliders'
+        /// impulses −n·rᵢ; <paramref name="velocities"/> the velocities the targets cancel), then up to
+        /// <see cref="MaxContactPasses"/> − 1 restarts after releasing the nodes a collider would pull.
         /// Returns the iterations taken; <paramref name="residual"/> = ‖r‖/‖b‖ at the end.
         /// </summary>
         static int ConjugateGradient(in FemModel model, bool neoHookean, ReadOnlySpan<quaternion> rotations, ReadOnlySpan<float3> tangents,
-            Span<float3> slots, Span<float3> work, ReadOnlySpan<float3> warmStart, float c, int maxIterations, float tolerance,
-            out bool converged, out float residual)
+            Span<float3> slots, Span<float3> work, ReadOnlySpan<float3> warmStart, Span<float3> contacts, ReadOnlySpan<float3> velocities,
+            float c, int maxIterations, float tolerance, out bool converged, out float residual)
         {
             int n = model.ParticleCount;
             Span<float3> dv = work.Slice(0, n), r = work.Slice(n, n), z = work.Slice(2 * n, n), p = work.Slice(3 * n, n),
                 q = work.Slice(4 * n, n);
             ReadOnlySpan<float> w = model.InverseMasses, m = model.Masses;
-            float bb = 0f;
-            for (int i = 0; i < n; i++)
-                bb += math.lengthsq(r[i]);
             converged = true;
             residual = 0f;
             int iterations = 0;
-            if (!(bb > 0f && math.isfinite(bb)))
+            float bb, rr;
+            if (!contacts.IsEmpty)
             {
-                dv.Clear();
-                return 0;
-            }
-            float rr = bb;
-            dv.Clear();
-            // Warm start with the rest factor only: its P ≈ A makes ‖r‖ ≤ tol ‖b‖ bound the error of the soft (bending) modes
-            // too; under block-Jacobi a warm-started solve stops with those modes loose (measured: a 1 s quasi-static
-            // beam step lands 30 % off), while a cold one resolves the smooth load first.
-            if (warmStart.Length == n && model.HasRestFactor)
-            {
-                // r₀ = b − A Δv₀ (into z first), kept only when smaller than b: a guess far from the solution (after a jolt)
-                // would leave float32 round-off of ‖A Δv₀‖ in the residual, above the tolerance of a small ‖b‖.
-                for (int i = 0; i < n; i++)
-                    p[i] = w[i] > 0f && math.all(math.isfinite(warmStart[i])) ? warmStart[i] : float3.zero;
-                Apply(model, neoHookean, rotations, tangents, p, slots, q, c, m, w);
-                float guessed = 0f;
+                // Held nodes start at their target, no normal velocity: Δv₀ = −(v·n) n there, 0 elsewhere; r₀ = b − A Δv₀.
                 for (int i = 0; i < n; i++)
                 {
-                    z[i] = r[i] - q[i];
-                    guessed += math.lengthsq(z[i]);
+                    dv[i] = w[i] > 0f ? HeldVelocityChange(velocities[i], contacts[i]) : float3.zero;
                 }
-                if (guessed < bb)
+                Apply(model, neoHookean, rotations, tangents, dv, slots, q, c, m, w);
+                for (int i = 0; i < n; i++)
+                    r[i] -= q[i];
+                bb = rr = FilteredNorm(r, contacts);
+                if (!math.isfinite(bb))
                 {
-                    p.CopyTo(dv);
-                    z.CopyTo(r);
-                    rr = guessed;
+                    dv.Clear();
+                    return 0;
+                }
+            }
+            else
+            {
+                bb = FilteredNorm(r, contacts);
+                if (!(bb > 0f && math.isfinite(bb)))
+                {
+                    dv.Clear();
+                    return 0;
+                }
+                rr = bb;
+                dv.Clear();
+                // Warm start with the rest factor only: its P ≈ A makes ‖r‖ ≤ tol ‖b‖ bound the error of the soft (bending) modes
+                // too; under block-Jacobi a warm-started solve stops with those modes loose (measured: a 1 s quasi-static
+                // beam step lands 30 % off), while a cold one resolves the smooth load first.
+                if (warmStart.Length == n && model.HasRestFactor)
+                {
+                    // r₀ = b − A Δv₀ (into z first), kept only when smaller than b: a guess far from the solution (after a jolt)
+                    // would leave float32 round-off of ‖A Δv₀‖ in the residual, above the tolerance of a small ‖b‖.
+                    for (int i = 0; i < n; i++)
+                        p[i] = w[i] > 0f && math.all(math.isfinite(warmStart[i])) ? warmStart[i] : float3.zero;
+                    Apply(model, neoHookean, rotations, tangents, p, slots, q, c, m, w);
+                    float guessed = 0f;
+                    for (int i = 0; i < n; i++)
+                    {
+                        z[i] = r[i] - q[i];
+                        guessed += math.lengthsq(z[i]);
+                    }
+                    if (guessed < bb)
+                    {
+                        p.CopyTo(dv);
+                        z.CopyTo(r);
+                        rr = guessed;
+                    }
                 }
             }
             float threshold = tolerance * tolerance * bb;
-            if (rr > threshold)
+            for (int pass = 1; ; pass++)
             {
-                float rz = Precondition(model, work, r, z);
-                z.CopyTo(p);
-                converged = false;
-                while (iterations < maxIterations)
+                if (rr > threshold)
                 {
-                    iterations++;
-                    float pq = Apply(model, neoHookean, rotations, tangents, p, slots, q, c, m, w);
-                    if (!(pq > 0f))
-                        break;
-                    float a = rz / pq;
-                    rr = 0f;
-                    for (int i = 0; i < n; i++)
+                    float rz = Precondition(model, work, r, z, contacts);
+                    z.CopyTo(p);
+                    converged = false;
+                    while (iterations < maxIterations)
                     {
-                        dv[i] += a * p[i];
-                        r[i] -= a * q[i];
-                        rr += math.lengthsq(r[i]);
+                        iterations++;
+                        float pq = Apply(model, neoHookean, rotations, tangents, p, slots, q, c, m, w);
+                        if (!(pq > 0f))
+                            break;
+                        float a = rz / pq;
+                        rr = 0f;
+                        for (int i = 0; i < n; i++)
+                        {
+                            dv[i] += a * p[i];
+                            r[i] -= a * q[i];
+                            rr += math.lengthsq(Filter(r[i], contacts, i));
+                        }
+                        if (rr <= threshold)
+                        {
+                            converged = true;
+                            break;
+                        }
+                        float rzNew = Precondition(model, work, r, z, contacts);
+                        float beta = rzNew / rz;
+                        rz = rzNew;
+                        for (int i = 0; i < n; i++)
+                            p[i] = z[i] + beta * p[i];
                     }
-                    if (rr <= threshold)
-                    {
-                        converged = true;
-                        break;
-                    }
-                    float rzNew = Precondition(model, work, r, z);
-                    float beta = rzNew / rz;
-                    rz = rzNew;
-                    for (int i = 0; i < n; i++)
-                        p[i] = z[i] + beta * p[i];
                 }
+                if (contacts.IsEmpty || pass >= MaxContactPasses || !ReleasePulled(contacts, r))
+                    break;
+                rr = FilteredNorm(r, contacts);
             }
             residual = math.sqrt(rr / bb);
             return iterations;
+        }
+
+        /// <summary>Most conjugate-gradient passes of a solve with contacts: the first, and restarts after releasing nodes a collider would pull.</summary>
+        public const int MaxContactPasses = 16;
+
+        /// <summary>True when a free node (inverse mass &gt; 0) has a contact normal.</summary>
+        static bool AnyContact(ReadOnlySpan<float3> contacts, ReadOnlySpan<float> w)
+        {
+            if (contacts.Length != w.Length)
+                return false;
+            for (int i = 0; i < contacts.Length; i++)
+                if (w[i] > 0f && math.lengthsq(contacts[i]) > 0f)
+                    return true;
+            return false;
+        }
+
+        /// <summary>Sᵢ u: u − (n·u) n for a held node (contact normal n), u for a free node or without contacts.</summary>
+        static float3 Filter(float3 u, ReadOnlySpan<float3> contacts, int i)
+        {
+            if (contacts.IsEmpty)
+                return u;
+            float3 normal = contacts[i];
+            return u - math.dot(u, normal) * normal;
+        }
+
+        /// <summary>The change that cancels a held node's normal velocity, −(v·n) n (0 for a free node).</summary>
+        static float3 HeldVelocityChange(float3 v, float3 normal) => -math.dot(v, normal) * normal;
+
+        /// <summary>Σ |Sᵢ uᵢ|².</summary>
+        static float FilteredNorm(ReadOnlySpan<float3> u, ReadOnlySpan<float3> contacts)
+        {
+            float sum = 0f;
+            for (int i = 0; i < u.Length; i++)
+                sum += math.lengthsq(Filter(u[i], contacts, i));
+            return sum;
+        }
+
+        /// <summary>
+        /// Releases every held node whose collider would pull: impulse fₙ = −n·rᵢ &lt; 0 (r = b − A Δv, unfiltered along n).
+        /// Returns whether any was released.
+        /// </summary>
+        static bool ReleasePulled(Span<float3> contacts, ReadOnlySpan<float3> r)
+        {
+            bool released = false;
+            for (int i = 0; i < contacts.Length; i++)
+            {
+                if (math.dot(contacts[i], r[i]) > 0f)
+                {
+                    contacts[i] = float3.zero;
+                    released = true;
+                }
+            }
+            return released;
         }
 
         /// <summary>
@@ -308,6 +423,27 @@ namespace SoftBodyDynamics.Solvers
                 return FemBlockJacobi.Apply(work.Slice(5 * n, n), work.Slice(6 * n, n), r, z);
             fixed (float3* temp = work.Slice(6 * n, n))
                 return FemRestFactor.Apply(model, work.Slice(5 * n, n), r, z, new Span<float>(temp, 3 * n));
+        }
+
+        /// <summary>
+        /// z = P⁻¹ r with the preconditioner of <see cref="PreparePreconditioner"/>; returns r · z. With contacts,
+        /// z = S P⁻¹ S r (symmetric positive definite on the filtered subspace), r · z = (S r) · z.
+        /// </summary>
+        static float Precondition(in FemModel model, Span<float3> work, ReadOnlySpan<float3> r, Span<float3> z, ReadOnlySpan<float3> contacts)
+        {
+            if (contacts.IsEmpty)
+                return Precondition(model, work, r, z);
+            for (int i = 0; i < z.Length; i++)
+                z[i] = Filter(r[i], contacts, i);
+            // In place: both preconditioners read all of their input before writing a node of the output (their own r · z is then not used).
+            Precondition(model, work, z, z);
+            float rz = 0f;
+            for (int i = 0; i < z.Length; i++)
+            {
+                z[i] = Filter(z[i], contacts, i);
+                rz += math.dot(r[i], z[i]);
+            }
+            return rz;
         }
 
         /// <summary>q = A u = M u + c K u at the free nodes (0 at pinned ones); returns uᵀA u.</summary>

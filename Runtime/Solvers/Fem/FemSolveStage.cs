@@ -138,7 +138,8 @@ namespace SoftBodyDynamics.Solvers
                         ? new Span<float3>(m_Tangents, NeoHookeanTangent.Float3Count * m_PointCount)
                         : default;
                     int iterations = FemImplicitEuler.Solve(model, m_Parameters.Model, x, v, Rotations, tangents, m_Parameters.RotationIterations,
-                        slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), WarmStart, h, m_Beta,
+                        slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), WarmStart,
+                        constants.Contact.Friction == 0f ? body.ContactNormals : default, h, m_Beta,
                         m_Parameters.NewtonIterations, m_Parameters.CgIterations, m_Parameters.CgTolerance, out bool converged,
                         out float residual, out InvertedElements);
                     MaxCgIterations = math.max(MaxCgIterations, iterations);

@@ -60,12 +60,17 @@ namespace SoftBodyDynamics.Solvers
             return omega > 0f && model.DampingRatio > 0f ? 2f * model.DampingRatio / omega : 0f;
         }
 
-        /// <summary>The per-step constants of (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>: fixed substeps, no shared velocity damping.</summary>
+        /// <summary>
+        /// The per-step constants of (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>: fixed substeps, no
+        /// shared velocity damping; frictionless contacts kept while touching (the implicit solve holds them on the surface).
+        /// </summary>
         public static ParticleStepConstants Constants(in FemParameters p, float dt)
         {
             int substeps = math.clamp(p.Substeps, 1, FemParameters.MaxSubsteps);
-            return ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction, p.Restitution,
-                p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
+            ParticleStepConstants constants = ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction,
+                p.Restitution, p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
+            constants.Contact.KeepTouching = p.Friction == 0f;
+            return constants;
         }
 
         /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment.</summary>

@@ -557,7 +557,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 var scratch = new float3[n];
                 var work = new float3[FemState.WorkVectors * n];
                 cg = FemImplicitEuler.Solve(model, FemMaterialModel.NeoHookean, x0, v, rotations, tangents, 20, slots, scratch, work, default,
-                    h, 0f, newton, 2000, 1e-7f, out bool converged, out _, out _);
+                    default, h, 0f, newton, 2000, 1e-7f, out bool converged, out _, out _);
                 Assert.That(converged);
                 var x1 = new float3[n];
                 for (int i = 0; i < n; i++)

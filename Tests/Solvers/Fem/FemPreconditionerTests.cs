@@ -168,7 +168,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 FemModel m = data.AsModel();
                 var v = (float3[])v0.Clone();
                 iterations = FemImplicitEuler.Solve(m, FemMaterialModel.CoRotational, x, v, Rotations(data, quaternion.identity), default, 20,
-                    new float3[m.SlotCount], new float3[n], new float3[FemState.WorkVectors * n], warm, H, 0f, 1, 2000, 1e-6f, out bool converged,
+                    new float3[m.SlotCount], new float3[n], new float3[FemState.WorkVectors * n], warm, default, H, 0f, 1, 2000, 1e-6f, out bool converged,
                     out float residual, out _);
                 Assert.That(converged);
                 Assert.That(residual, Is.LessThanOrEqualTo(1e-6f));
