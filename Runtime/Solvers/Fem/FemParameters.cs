@@ -33,7 +33,10 @@ namespace SoftBodyDynamics.Solvers
         public float MaxDepenetrationSpeed;
         /// <summary>Node radius used against colliders (m).</summary>
         public float ParticleRadius;
-        /// <summary>Coulomb friction coefficient against colliders (dimensionless).</summary>
+        /// <summary>
+        /// Coulomb friction coefficient against colliders (dimensionless). At 0 the implicit integrator holds its contact nodes
+        /// in its solve (a pressed body settles at its equilibrium); with friction they are pushed out after the solve.
+        /// </summary>
         public float Friction;
         /// <summary>Restitution e ∈ [0, 1] of node–collider contacts.</summary>
         public float Restitution;
