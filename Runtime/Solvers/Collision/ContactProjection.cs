@@ -85,16 +85,9 @@ namespace SoftBodyDynamics.Solvers
             int contacts = 0;
             float invH = 1f / h;
             float radius = settings.Radius;
-            bool rebased = math.any(settings.Origin != float3.zero);
             Span<float3> leaving = stackalloc float3[MaxSharedColliders];
+            bool bodyLeaving = BodyLeaves(previous, colliders, settings, leaving);
             leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
-            bool bodyLeaving = false;
-            if (leaving.Length > 0)
-            {
-                LeavingDirections(previous, colliders, settings, leaving);
-                for (int c = 0; c < leaving.Length; c++)
-                    bodyLeaving |= math.lengthsq(leaving[c]) > 0f;
-            }
             for (int i = 0; i < predicted.Length; i++)
             {
                 float3 start = predicted[i];
@@ -104,7 +97,7 @@ namespace SoftBodyDynamics.Solvers
                 bool surface = false; // pushed out of a surface (not only carried by the whole body's leave)
                 for (int c = 0; c < colliders.Length; c++)
                 {
-                    ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                    ColliderShape collider = Local(colliders[c], settings);
                     float3 away = c < leaving.Length ? leaving[c] : float3.zero;
                     bool bodyLeaves = math.lengthsq(away) > 0f;
                     // Overlap at the start of the substep: known up front while the body leaves this collider, else found on a hit.
@@ -190,40 +183,47 @@ namespace SoftBodyDynamics.Solvers
         public static void StartContacts(ReadOnlySpan<float3> positions, Span<float3> contactNormals, ReadOnlySpan<ColliderShape> colliders,
             in Settings settings)
         {
-            bool rebased = math.any(settings.Origin != float3.zero);
-            float reach = settings.Radius + TouchingDistance;
-            for (int i = 0; i < positions.Length; i++)
+            Span<float3> leaving = stackalloc float3[MaxSharedColliders];
+            if (BodyLeaves(positions, colliders, settings, leaving))
             {
-                float3 normal = float3.zero;
-                for (int c = 0; c < colliders.Length; c++)
-                {
-                    ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
-                    if (!ParticleCollision.Penetration(collider, positions[i], reach, out float3 n, out float depth))
-                        continue;
-                    if (depth - TouchingDistance > settings.MaxDepenetration)
-                    {
-                        contactNormals.Clear();
-                        return;
-                    }
-                    if (math.lengthsq(normal) == 0f)
-                        normal = n;
-                }
-                contactNormals[i] = normal;
+                contactNormals.Clear();
+                return;
             }
+            for (int i = 0; i < positions.Length; i++)
+                contactNormals[i] = Touching(colliders, settings, positions[i], float3.zero);
         }
 
         /// <summary>
-        /// The normal of the first collider within <see cref="TouchingDistance"/> of a particle at <paramref name="x"/> whose normal
-        /// there is within 60° of <paramref name="previousNormal"/>; zero when none.
+        /// The whole-body leaving directions of <see cref="LeavingDirections"/> into <paramref name="leaving"/> (at most
+        /// <see cref="MaxSharedColliders"/>, none without <see cref="Settings.WholeBody"/>), and whether the body leaves any collider.
+        /// </summary>
+        static bool BodyLeaves(ReadOnlySpan<float3> previous, ReadOnlySpan<ColliderShape> colliders, in Settings settings, Span<float3> leaving)
+        {
+            leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
+            if (leaving.Length == 0)
+                return false;
+            LeavingDirections(previous, colliders, settings, leaving);
+            for (int c = 0; c < leaving.Length; c++)
+                if (math.lengthsq(leaving[c]) > 0f)
+                    return true;
+            return false;
+        }
+
+        /// <summary>The collider in the particles' frame (relative to <see cref="Settings.Origin"/>).</summary>
+        static ColliderShape Local(in ColliderShape collider, in Settings settings) =>
+            math.any(settings.Origin != float3.zero) ? collider.Translated(-settings.Origin) : collider;
+
+        /// <summary>
+        /// The normal of the first collider that a particle at <paramref name="x"/> overlaps or is within <see cref="TouchingDistance"/>
+        /// of, and whose normal there is within 60° of <paramref name="previousNormal"/> (any, when that is zero); zero when none.
         /// </summary>
         static float3 Touching(ReadOnlySpan<ColliderShape> colliders, in Settings settings, float3 x, float3 previousNormal)
         {
-            bool rebased = math.any(settings.Origin != float3.zero);
+            bool anyDirection = math.lengthsq(previousNormal) == 0f;
             for (int c = 0; c < colliders.Length; c++)
             {
-                ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
-                if (ParticleCollision.Penetration(collider, x, settings.Radius + TouchingDistance, out float3 n, out _)
-                    && math.dot(n, previousNormal) > 0.5f)
+                if (ParticleCollision.Penetration(Local(colliders[c], settings), x, settings.Radius + TouchingDistance, out float3 n, out _)
+                    && (anyDirection || math.dot(n, previousNormal) > 0.5f))
                     return n;
             }
             return float3.zero;
@@ -242,12 +242,11 @@ namespace SoftBodyDynamics.Solvers
             leaving.Clear();
             if (!(settings.MaxDepenetration < float.PositiveInfinity) || previous.Length == 0)
                 return;
-            bool rebased = math.any(settings.Origin != float3.zero);
             float3 centroid = float3.zero;
             bool centroidKnown = false;
             for (int c = 0; c < leaving.Length; c++)
             {
-                ColliderShape collider = rebased ? colliders[c].Translated(-settings.Origin) : colliders[c];
+                ColliderShape collider = Local(colliders[c], settings);
                 // A plane pushes every particle the same way: it cannot tear a body.
                 if (collider.Type == ColliderShapeType.Plane)
                     continue;

@@ -260,9 +260,7 @@ namespace SoftBodyDynamics.Solvers
             {
                 // Held nodes start at their target, no normal velocity: Δv₀ = −(v·n) n there, 0 elsewhere; r₀ = b − A Δv₀.
                 for (int i = 0; i < n; i++)
-                {
                     dv[i] = w[i] > 0f ? HeldVelocityChange(velocities[i], contacts[i]) : float3.zero;
-                }
                 Apply(model, neoHookean, rotations, tangents, dv, slots, q, c, m, w);
                 for (int i = 0; i < n; i++)
                     r[i] -= q[i];
@@ -345,7 +343,8 @@ namespace SoftBodyDynamics.Solvers
                     break;
                 rr = FilteredNorm(r, contacts);
             }
-            residual = math.sqrt(rr / bb);
+            // With contacts ‖S r₀‖ may be 0 (the held targets solve the system): nothing is left.
+            residual = bb > 0f ? math.sqrt(rr / bb) : 0f;
             return iterations;
         }
 

@@ -69,15 +69,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             int cg = 0;
             for (int step = 0; step < 10; step++)
                 cg += body.Step(1f).TotalCgIterations;
-            double sag = 0;
-            int count = 0;
-            for (int i = 0; i < mesh.NodeCount; i++)
-                if (mesh.Positions[i].x == length)
-                {
-                    sag += (data.RestPositions[i].y - data.RestCenter.y + startCenter.y) - body.Positions[i].y;
-                    count++;
-                }
-            double ratio = sag / count / eulerBernoulli;
+            double ratio = body.MeanSag(mesh, length, startCenter) / eulerBernoulli;
             TestContext.WriteLine($"{order} {10 * n}×{n}×{n} cubes: tip sag / Euler–Bernoulli {ratio:G4}, CG iterations {cg}");
             return ratio;
         }

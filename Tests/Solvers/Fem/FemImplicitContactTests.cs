@@ -34,7 +34,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// <summary>
         /// A cube at rest on a frictionless floor, one 1/60 s substep per step, stays on it: after 2 s every node is at most
         /// 10 µm below the contact height (the touching distance; the held nodes do not move along the normal) and the body
-        /// is at rest (every speed below 1 mm/s: h g = 0.16 m/s would remain if the held nodes were not solved at rest).
+        /// is at rest, every speed below 1 mm/s. Without the contacts' work in the Neo-Hookean line search (<c>HeldWork</c>)
+        /// the held targets shorten every Newton step and a node keeps 4.2 mm/s (measured).
         /// </summary>
         [TestCase(FemMaterialModel.CoRotational)]
         [TestCase(FemMaterialModel.NeoHookean)]

@@ -409,15 +409,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             // a ±3 % step-to-step jitter of the sag with either model.)
             for (int step = 0; step < 15; step++)
                 body.Step(0.2f);
-            double sag = 0;
-            int count = 0;
-            for (int i = 0; i < mesh.NodeCount; i++)
-                if (mesh.Positions[i].x == length)
-                {
-                    sag += (data.RestPositions[i].y - data.RestCenter.y + startCenter.y) - body.Positions[i].y;
-                    count++;
-                }
-            return sag / count;
+            return body.MeanSag(mesh, length, startCenter);
         }
 
         /// <summary>

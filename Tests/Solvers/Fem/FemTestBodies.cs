@@ -55,6 +55,23 @@ namespace SoftBodyDynamics.Tests.Solvers
         public FemStepReport Step(float dt, ColliderShape[] colliders = null) =>
             FemSolver.Step(Data.AsModel(), Parameters, colliders ?? Array.Empty<ColliderShape>(), dt, State, ref Status);
 
+        /// <summary>
+        /// Mean downward displacement (m) of the nodes of <paramref name="mesh"/> on the face x = <paramref name="tipX"/> from their
+        /// rest places about <paramref name="startCenter"/> (the body's centre when it was placed).
+        /// </summary>
+        public double MeanSag(TetrahedralMesh mesh, float tipX, float3 startCenter)
+        {
+            double sag = 0;
+            int count = 0;
+            for (int i = 0; i < mesh.NodeCount; i++)
+                if (mesh.Positions[i].x == tipX)
+                {
+                    sag += (Data.RestPositions[i].y - Data.RestCenter.y + startCenter.y) - Positions[i].y;
+                    count++;
+                }
+            return sag / count;
+        }
+
         /// <summary>Smallest det F over the elements.</summary>
         public float MinDeterminant()
         {
