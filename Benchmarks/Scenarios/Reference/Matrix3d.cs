@@ -73,6 +73,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public double FrobeniusSquared =>
             M00 * M00 + M01 * M01 + M02 * M02 + M10 * M10 + M11 * M11 + M12 * M12 + M20 * M20 + M21 * M21 + M22 * M22;
 
+        /// <summary>Σ aᵢⱼ bᵢⱼ = tr(a bᵀ), the Frobenius inner product.</summary>
+        public static double Dot(in Matrix3d a, in Matrix3d b) =>
+            a.M00 * b.M00 + a.M01 * b.M01 + a.M02 * b.M02 + a.M10 * b.M10 + a.M11 * b.M11 + a.M12 * b.M12
+            + a.M20 * b.M20 + a.M21 * b.M21 + a.M22 * b.M22;
+
         /// <summary>max |Mᵢⱼ|.</summary>
         public double MaxAbs => Math.Max(Math.Max(Math.Max(Math.Abs(M00), Math.Abs(M01)), Math.Max(Math.Abs(M02), Math.Abs(M10))),
             Math.Max(Math.Max(Math.Abs(M11), Math.Abs(M12)), Math.Max(Math.Max(Math.Abs(M20), Math.Abs(M21)), Math.Abs(M22))));

@@ -13,8 +13,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <list type="bullet">
     /// <item>gᵢ(x) = Σ_c (1/nᵢ) g_c,i: the average over the particle's clusters of each cluster's goal c_c + T_c q_c,i,
     /// with c_c = Σ w x / Σ w, A_pq = Σ w (x − c_c) qᵀ, weights wᵢ = mᵢ/nᵢ, and T_c = R (rigid: the polar rotation of
-    /// A_pq, by Higham's iteration, <see cref="Matrix3d.PolarRotation"/>), R + β·fade·LimitStrain(A − R) + V (linear:
-    /// A = A_pq A_qq⁻¹, the strain limited to a Frobenius norm of 1 and faded out toward a flat or inverted cluster, V the
+    /// A_pq, by Higham's iteration, <see cref="Matrix3d.PolarRotation"/>), R + β·fade·limit·(A − R) + V (linear:
+    /// A = A_pq A_qq⁻¹, the strain limited to 1 in the fit's metric and faded out toward a flat or inverted cluster, V the
     /// volume energy's gradient, exactly as <see cref="VolumePreservation.ConservativeLinearGoalTransform"/> specifies), or the quadratic goals of
     /// <see cref="QuadraticGoalsDouble"/> (the float64 statement of the solver's quadratic mode; it has no strain
     /// limit, so the quadratic reference holds while the quadratic strain stays below 1);</item>
@@ -288,9 +288,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         /// <summary>
         /// The linear mode's goal transform in float64, as <see cref="VolumePreservation.ConservativeLinearGoalTransform"/>
-        /// states it: R when det(A / max|Aᵢⱼ|) is at or below the floor; otherwise R + w·(A − R) + V with w = β·fade, the strain
-        /// A − R scaled to a Frobenius norm of at most <see cref="VolumePreservation.MaxGoalStrain"/>, fade = saturate((det − floor)
-        /// / (9·floor)) and V = −(w/9)(det A − 1) M L² cof(A) A_qq⁻¹.
+        /// states it: R when det(A / max|Aᵢⱼ|) is at or below the floor; otherwise R + w·limit·(A − R) + V with w = β·fade,
+        /// limit = min(1, ε_max/ε) for the strain ε² = 3 tr((A − R) A_qq (A − R)ᵀ) / (M L²) and ε_max =
+        /// <see cref="VolumePreservation.MaxGoalStrain"/>, fade = saturate((det − floor) / (9·floor)) and
+        /// V = −(w/9)(det A − 1) M L² cof(A) A_qq⁻¹.
         /// </summary>
         public static Matrix3d LinearGoalTransform(in Matrix3d a, in Matrix3d r, double beta, double massLengthSquared, in Matrix3d aqqInverse)
         {
@@ -304,12 +305,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             // The solver's weight of the β part (1 away from flat or inverted clusters; its own piecewise-linear rule).
             double weight = Math.Min(1.0, Math.Max(0.0, beta)) * VolumePreservation.BetaFade((float)det);
             Matrix3d strain = a - r;
-            double norm = Math.Sqrt(strain.FrobeniusSquared);
-            if (norm > VolumePreservation.MaxGoalStrain)
-                strain = (VolumePreservation.MaxGoalStrain / norm) * strain;
+            double strainNorm = Math.Sqrt(3.0 * Matrix3d.Dot(strain * aqqInverse.Inverse, strain) / massLengthSquared);
+            double limit = strainNorm > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strainNorm : 1.0;
             double j = a.Determinant;
             Matrix3d cofactor = j * a.Inverse.Transpose;
-            return r + weight * strain + (-weight / 9.0 * (j - 1.0) * massLengthSquared) * (cofactor * aqqInverse);
+            return r + (weight * limit) * strain + (-weight / 9.0 * (j - 1.0) * massLengthSquared) * (cofactor * aqqInverse);
         }
     }
 }

@@ -19,10 +19,10 @@ namespace SoftBodyDynamics.Solvers
         public const float DefaultRelativeDeterminantFloor = 1e-6f;
 
         /// <summary>
-        /// Largest strain ‖Ã − R‖_F a goal transform may ask for. A cluster squashed flat has a tiny
-        /// det A, and A / ∛det A then stretches it enormously in the other directions (a cluster
-        /// flattened to 1e-5 would be told to grow 46-fold in-plane): goals that far away inject
-        /// energy. The strain is scaled down to this bound instead (1 = 100% strain).
+        /// Largest strain a goal transform may ask for (1 = 100 % strain): ‖Ã − R‖_F for the paper's goals
+        /// (<see cref="LimitStrain"/>), and the same norm in the fit's metric for the conservative ones (<see cref="StrainLimit"/>).
+        /// A cluster squashed flat has a tiny det A, and A / ∛det A then stretches it enormously in the other directions (a
+        /// cluster flattened to 1e-5 would be told to grow 46-fold in-plane): goals that far away inject energy.
         /// </summary>
         public const float MaxGoalStrain = 1f;
 
@@ -98,12 +98,13 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Conservative goal transform of the linear mode: R + β·fade·(A − R) + V, with A = A_pq A_qq⁻¹ the optimal linear fit
-        /// (not volume-normalised), the strain A − R limited to <see cref="MaxGoalStrain"/> and faded as in
-        /// <see cref="LinearGoalTransform(in float3x3, in float3x3, float, out bool)"/>, and V the gradient of the volume energy
+        /// Conservative goal transform of the linear mode: R + β·fade·limit·(A − R) + V, with A = A_pq A_qq⁻¹ the optimal linear fit
+        /// (not volume-normalised), the strain A − R limited to <see cref="MaxGoalStrain"/> in the fit's metric
+        /// (<see cref="StrainLimit"/>) and faded as in <see cref="LinearGoalTransform(in float3x3, in float3x3, float, out bool)"/>, and V the gradient of the volume energy
         /// E = ½ ω² κ M L² (det A − 1)², V = −κ (J − 1) M L² cof(A) A_qq⁻¹ with κ = β·fade/9 (a uniform dilation is then
         /// resisted at the full ω², as by Müller et al.'s A/∛det A). Away from the limiter both parts are gradients of
-        /// energies (β E_A + (1 − β) E_R by the envelope theorem, and E), so an undamped free body gains no energy, which the
+        /// energies (β E_A + (1 − β) E_R by the envelope theorem, and E; the limiter keeps that, see <see cref="StrainLimit"/>), so an
+        /// undamped free body gains no energy, which the
         /// normalisation A/∛det A does not give: a spinning body with overlapping clusters at β = 0.99 gains 20× its kinetic energy with it.
         /// </summary>
         /// <param name="aLinear">A = A_pq · A_qq⁻¹.</param>
@@ -123,13 +124,34 @@ namespace SoftBodyDynamics.Solvers
                 return rotation;
             }
             rigidFallback = false;
-            float weight = math.saturate(beta) * BetaFade(det);
-            float3x3 t = rotation + weight * LimitStrain(aLinear - rotation);
+            float3x3 strain = aLinear - rotation;
+            float massLengthSquared = totalMass * lengthScale * lengthScale;
+            float fitGap = Dot(math.mul(strain, math.inverse(aqqInverse)), strain);
+            float weight = math.saturate(beta) * BetaFade(det) * StrainLimit(fitGap, massLengthSquared);
+            float3x3 t = rotation + weight * strain;
             float j = math.determinant(aLinear);
             float3x3 cofactor = j * math.transpose(math.inverse(aLinear));
-            float3x3 volume = (-weight / 9f * (j - 1f) * totalMass * lengthScale * lengthScale) * math.mul(cofactor, aqqInverse);
+            float3x3 volume = (-math.saturate(beta) * BetaFade(det) / 9f * (j - 1f) * massLengthSquared) * math.mul(cofactor, aqqInverse);
             return Finite.All(volume) ? t + volume : t;
         }
+
+        /// <summary>
+        /// Factor (0 to 1] on β that limits a goal's strain D = Ã − R to <see cref="MaxGoalStrain"/>, measured in the fit's own
+        /// metric: ε² = 3 tr(D A_qq Dᵀ) / M (the Frobenius norm of D for an isotropic cluster, A_qq = M L²/3 · I). Since Ã
+        /// minimises the fit energy E(T) = ½ Σ wᵢ |T qᵢ − pᵢ|², ½ tr(D A_qq Dᵀ) = E_R − E_A exactly, so the limited pull
+        /// c(δ) = β min(1, ε_max/ε) is the gradient of Φ = E_R − h(E_R − E_A) with h′ = c: conservative at every strain,
+        /// where scaling by the plain Frobenius norm is not (an undamped quadratic body at β = 0.99 gained 2× its energy).
+        /// </summary>
+        /// <param name="fitGap">tr(D A_qq Dᵀ) (kg m²; in kg when the offsets are divided by L).</param>
+        /// <param name="massLengthSquared">M L² in the same units (M alone when the offsets are divided by L).</param>
+        public static float StrainLimit(float fitGap, float massLengthSquared)
+        {
+            float strainSquared = 3f * fitGap / massLengthSquared;
+            const float max = MaxGoalStrain * MaxGoalStrain;
+            return strainSquared > max ? MaxGoalStrain / math.sqrt(strainSquared) : 1f; // NaN → 1: the fade and guard handle it
+        }
+
+        static float Dot(in float3x3 a, in float3x3 b) => math.dot(a.c0, b.c0) + math.dot(a.c1, b.c1) + math.dot(a.c2, b.c2);
 
         /// <summary>The strain scaled down to a Frobenius norm of at most <see cref="MaxGoalStrain"/>.</summary>
         public static float3x3 LimitStrain(in float3x3 strain)

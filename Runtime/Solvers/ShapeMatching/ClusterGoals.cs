@@ -120,6 +120,9 @@ namespace SoftBodyDynamics.Solvers
             return counters;
         }
 
+        /// <summary>Largest ratio of the squared RMS strain to the squared RMS displacement (over L) of a quadratic deformation in a uniformly filled cluster.</summary>
+        const float k_QuadraticStrainPerDisplacement = 15f;
+
         /// <summary>Eq. 11/12 in coordinates scaled by 1/L, with the centred q̃: gᵢ = x_cm + L (β Ã + (1 − β)[R 0 0]) q̃ᵢ.</summary>
         static void QuadraticGoals(in ShapeMatchingModel model, in ShapeMatchingParameters p, in ShapeMatchingState state,
             System.ReadOnlySpan<float3> x, int c, int start, int end, float3 center, in float3x3 sp, bool usePlastic, ref ClusterState cluster,
@@ -128,6 +131,7 @@ namespace SoftBodyDynamics.Solvers
             float length = cluster.Rest.LengthScale;
             float invL = 1f / length;
             float3x3 p0 = float3x3.zero, p1 = float3x3.zero, p2 = float3x3.zero;
+            float restSpread = 0f; // tr(A_qq) of the scaled linear part, Σ wᵢ |qᵢ/L|²
             for (int k = start; k < end; k++)
             {
                 int i = model.ClusterParticles[k];
@@ -137,6 +141,7 @@ namespace SoftBodyDynamics.Solvers
                 p0 += Matrix3.Outer(wp, a);
                 p1 += Matrix3.Outer(wp, b);
                 p2 += Matrix3.Outer(wp, cr);
+                restSpread += model.ClusterWeights[k] * math.lengthsq(a);
             }
             // p0 is A_pq / L²: same rotation.
             int iterations = RotationExtraction.Extract(p0, ref cluster.Rotation, p.RotationIterations);
@@ -151,11 +156,19 @@ namespace SoftBodyDynamics.Solvers
             float fade = VolumePreservation.BetaFade(relativeDeterminant);
             if (fade < 1f)
                 counters.Fallbacks++;
-            // β blend of the 3×9 strain [Ã₀ − R, Ã₁, Ã₂], limited like the linear mode's.
-            float3x3 s0 = t0 - r;
-            float strain = math.sqrt(SquaredNorm(s0) + SquaredNorm(t1) + SquaredNorm(t2));
-            float beta = fade * math.saturate(p.Beta) * (strain > VolumePreservation.MaxGoalStrain ? VolumePreservation.MaxGoalStrain / strain : 1f);
-            float3x3 g0 = r + beta * s0, g1 = beta * t1, g2 = beta * t2;
+            // β blend toward Ã, with the strain limited so that the pull stays an energy's gradient (VolumePreservation.StrainLimit),
+            // in two levels: the fit energies E_R ≥ E_A ≥ E_Ã (rotation, linear fit A, quadratic fit Ã) give the goal transform
+            // R + c₁ (A − R) + c₂ (Ã − A), the gradient of Φ = E_R − h₁(E_R − E_A) − h₂(E_A − E_Ã) with cₖ = hₖ′. The linear level
+            // is limited as in the linear mode; the quadratic surplus by its strain, whose RMS is at most √15 times its RMS
+            // displacement in a uniformly filled cluster (u = C(x² − ⟨x²⟩): 4⟨x²⟩/(⟨x⁴⟩ − ⟨x²⟩²) = 15 at ⟨x²⟩ = 1/3, ⟨x⁴⟩ = 1/5).
+            // 2(E_R − E_A) = ⟨A, Ã_pq,₀⟩ − 2⟨R, Ã_pq,₀⟩ + tr(A_qq), 2(E_A − E_Ã) = Σⱼ ⟨Ãⱼ, Ã_pq,ⱼ⟩ − ⟨A, Ã_pq,₀⟩ (scaled by 1/L).
+            float weight = fade * math.saturate(p.Beta);
+            float linearFit = Dot(aLinear, p0);
+            float linearGap = linearFit - 2f * Dot(r, p0) + restSpread;
+            float quadraticGap = Dot(t0, p0) + Dot(t1, p1) + Dot(t2, p2) - linearFit;
+            float c1 = weight * VolumePreservation.StrainLimit(linearGap, cluster.Rest.TotalMass);
+            float c2 = weight * VolumePreservation.StrainLimit(k_QuadraticStrainPerDisplacement * quadraticGap, cluster.Rest.TotalMass);
+            float3x3 g0 = r + c1 * (aLinear - r) + c2 * (t0 - aLinear), g1 = c2 * t1, g2 = c2 * t2;
             // Volume: the β part follows a change of volume too, so the goals add the gradient of a volume energy,
             // E = ½ ω² κ M L² (J − 1)² with J = det A, A = A_pq A_qq⁻¹ of the linear fit: ∂J/∂xᵢ = wᵢ cof(A) A_qq⁻¹ qᵢ, so the
             // goal of particle i moves by −κ (J − 1) cof(A) (M L² A_qq⁻¹) qᵢ. With κ = β/9 a small uniform dilation of an
@@ -190,7 +203,7 @@ namespace SoftBodyDynamics.Solvers
         static float3 RestOffset(float3 rest, float3 restCenter, in float3x3 sp, bool usePlastic) =>
             usePlastic ? math.mul(sp, rest - restCenter) : rest - restCenter;
 
-        static float SquaredNorm(in float3x3 m) => math.lengthsq(m.c0) + math.lengthsq(m.c1) + math.lengthsq(m.c2);
+        static float Dot(in float3x3 a, in float3x3 b) => math.dot(a.c0, b.c0) + math.dot(a.c1, b.c1) + math.dot(a.c2, b.c2);
 
         static bool IsIdentity(in float3x3 m) =>
             m.c0.x == 1f && m.c1.y == 1f && m.c2.z == 1f && m.c0.y == 0f && m.c0.z == 0f
