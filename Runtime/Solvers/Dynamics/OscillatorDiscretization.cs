@@ -18,17 +18,24 @@ namespace SoftBodyDynamics.Solvers
     /// ωh small (<see cref="SubstepsFor"/>).
     /// Both coefficients are formed without cancellation (products of 1 − e^{−x}), so α stays accurate in
     /// float32 when it is as small as (ωh)² ~ 10⁻⁶.
+    /// <para>Above the Nyquist phase θ = ω√(1 − ζ²)h = π no substep can show the oscillator: the exact α would alias, falling
+    /// back toward (1 − e^{−ζωh})² each time θ passes a multiple of 2π, so a lightly damped body would lose its pull where
+    /// f·h is a whole number and sag freely. There θ is taken as <see cref="AliasedPhase"/> = π/3 instead (α ≤ 1, the
+    /// pull of a projection onto the goals, stable for every mode) with the same decay e^{−ζωh}.</para>
     /// </summary>
     public static class OscillatorDiscretization
     {
         /// <summary>Per-substep coefficients.</summary>
         public struct Coefficients
         {
-            /// <summary>α: fraction of the way to the goal added per substep, in [0, 4] (above 1 only for ωh &gt; π/3 undamped).</summary>
+            /// <summary>α: fraction of the way to the goal added per substep, in [0, 4] (above 1 only for π/3 &lt; θ ≤ π).</summary>
             public float Pull;
             /// <summary>D = e^{−2ζωh}: the fraction of the non-rigid velocity kept per substep, in (0, 1].</summary>
             public float VelocityRetention;
         }
+
+        /// <summary>Phase θ (rad) used for a substep whose θ = ω√(1 − ζ²)h is above π: α = 1 there when undamped.</summary>
+        public const double AliasedPhase = System.Math.PI / 3.0;
 
         /// <summary>α and D for angular frequency <paramref name="omega"/> (rad/s), damping ratio <paramref name="zeta"/> and substep <paramref name="h"/> (s).</summary>
         public static Coefficients Compute(float omega, float zeta, float h)
@@ -47,7 +54,8 @@ namespace SoftBodyDynamics.Solvers
                 // |1 − E e^{iθ}|² = (1 − E)² + 4E sin²(θ/2), E = e^{−ζωh}, θ = ω√(1 − ζ²) h.
                 double e = System.Math.Exp(-x);
                 double oneMinusE = OneMinusExpNeg(x);
-                double s = System.Math.Sin(0.5 * w * System.Math.Sqrt(1.0 - z * z) * dt);
+                double theta = w * System.Math.Sqrt(1.0 - z * z) * dt;
+                double s = System.Math.Sin(0.5 * (theta > System.Math.PI ? AliasedPhase : theta));
                 pull = oneMinusE * oneMinusE + 4.0 * e * s * s;
             }
             else

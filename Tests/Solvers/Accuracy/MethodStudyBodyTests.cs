@@ -20,6 +20,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 Material = ElasticMaterial.Rubber,
                 Pinned = pinBottom ? StudyBox.NodesAt(mesh, 1, -0.05f, 1e-5f) : null,
                 CalibrationLength = 0.1f,
+                CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
             };
         }
 

@@ -67,7 +67,10 @@ namespace SoftBodyDynamics.Tests.Solvers
                 if (candidate.Family == family)
                     v = candidate;
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(k_Size), new int3(4), float3.zero);
-            var setup = new MethodBodySetup { Mesh = mesh, Material = ElasticMaterial.Jelly, CalibrationLength = k_Size };
+            var setup = new MethodBodySetup
+            {
+                Mesh = mesh, Material = ElasticMaterial.Jelly, CalibrationLength = k_Size, CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
+            };
             IMethodBody body = v.Create(setup, v.Knobs[0], k_Size / 4);
             body.Place();
             double rest = RmsRadius(body);

@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using SoftBodyDynamics.Benchmarks.Scenarios;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -67,7 +68,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var material = new ElasticMaterial(e, nu, rho, zeta);
             Assert.IsFalse(material.IsValid);
             var error = Assert.Throws<ArgumentException>(() =>
-                ShapeMatchingCalibration.For(material, 0.1f, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default));
+                ShapeMatchingCalibration.For(material, 0.1f, ShapeMatchingCalibration.Load.Compression, ShapeMatchingMode.Linear,
+                    ShapeMatchingParameters.Default));
             Assert.AreEqual("material", error.ParamName);
         }
 
@@ -75,14 +77,46 @@ namespace SoftBodyDynamics.Tests.Solvers
         [TestCase(-0.1f)]
         [TestCase(float.NaN)]
         public void Calibration_RejectsABadLength(float length) =>
-            Assert.Throws<ArgumentException>(() => ShapeMatchingCalibration.For(ElasticMaterial.Rubber, length, ShapeMatchingMode.Linear,
-                ShapeMatchingParameters.Default));
+            Assert.Throws<ArgumentException>(() => ShapeMatchingCalibration.For(ElasticMaterial.Rubber, length,
+                ShapeMatchingCalibration.Load.Compression, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default));
 
+        /// <summary>
+        /// A compact body in compression: f is the quarter wave √(E/ρ) / (4H) of a column on its base, and ζ_SM is the material's
+        /// ζ (float32 round-off only).
+        /// </summary>
         [Test]
-        public void Calibration_AcceptsAValidMaterial_AndGivesTheFittedFrequency()
+        public void Calibration_OfACompactBody_IsTheColumnsSlowestMode()
         {
-            ShapeMatchingParameters p = ShapeMatchingCalibration.For(ElasticMaterial.Rubber, 0.1f, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
-            Assert.AreEqual(ShapeMatchingCalibration.Frequency(ElasticMaterial.Rubber, 0.1f, ShapeMatchingCalibration.LinearCoefficient), p.Frequency);
+            ElasticMaterial m = ElasticMaterial.Rubber;
+            ShapeMatchingParameters p = ShapeMatchingCalibration.For(m, 0.1f, ShapeMatchingCalibration.Load.Compression, ShapeMatchingMode.Linear,
+                ShapeMatchingParameters.Default);
+            Assert.That(p.Frequency, Is.EqualTo(Math.Sqrt(m.YoungsModulus / m.Density) / (4.0 * 0.1)).Within(1e-4).Percent);
+            Assert.That(p.DampingRatio, Is.EqualTo(m.DampingRatio));
+            Assert.That(p.Beta, Is.EqualTo(ShapeMatchingCalibration.Beta));
+        }
+
+        /// <summary>A slender body in bending takes the fitted coefficient and the beam's slowest-mode ratio.</summary>
+        [Test]
+        public void Calibration_OfABeam_GivesTheFittedFrequency()
+        {
+            ShapeMatchingParameters p = ShapeMatchingCalibration.For(ElasticMaterial.Rubber, 3.2f, ShapeMatchingCalibration.Load.Bending,
+                ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
+            Assert.AreEqual(ShapeMatchingCalibration.Frequency(ElasticMaterial.Rubber, 3.2f, ShapeMatchingCalibration.LinearCoefficient), p.Frequency);
+            Assert.AreEqual(ElasticMaterial.Rubber.DampingRatio * ShapeMatchingCalibration.SlowestModeRatio, p.DampingRatio);
+        }
+
+        /// <summary>
+        /// A frequency above <see cref="ShapeMatchingParameters.MaxFrequency"/> is refused with the number, instead of running
+        /// silently at the cap (rubber as a 10 cm beam would need 8.4 kHz).
+        /// </summary>
+        [Test]
+        public void Calibration_RefusesAFrequencyAboveTheLimit()
+        {
+            var error = Assert.Throws<ArgumentException>(() => ShapeMatchingCalibration.For(ElasticMaterial.Rubber, 0.1f,
+                ShapeMatchingCalibration.Load.Bending, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default));
+            StringAssert.Contains("Hz", error.Message);
+            Assert.DoesNotThrow(() => ShapeMatchingCalibration.For(StabilityCube.StiffMaterial, StabilityCube.DefaultSize,
+                ShapeMatchingCalibration.Load.Compression, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default));
         }
     }
 }

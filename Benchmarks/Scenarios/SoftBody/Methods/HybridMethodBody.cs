@@ -38,7 +38,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                         ?? throw new InvalidOperationException("Mass-spring bake failed");
             ClusterSet clusters = ClusterBuilder.Build(setup.Mesh.Positions, ShapeMatchingMethodBody.ClusterCells * cellSize * 1.001f);
             m_Shape = ShapeMatchingModelData.Create(setup.Mesh.Positions, m_Springs.Masses, clusters.Offsets, clusters.Particles, false, setup.Pinned);
-            ShapeMatchingParameters sp = ShapeMatchingCalibration.For(half, setup.CalibrationLength, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
+            ShapeMatchingParameters sp = ShapeMatchingCalibration.For(half, setup.CalibrationLength, setup.CalibrationLoad, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
             sp.Substeps = substeps;
             sp.MaxSubstepPhase = 1e6f;
             sp.SleepSpeed = 0f;

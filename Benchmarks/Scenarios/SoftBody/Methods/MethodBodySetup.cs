@@ -19,6 +19,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public float Friction = 0.5f;
         /// <summary>Characteristic length L of the body for the shape-matching calibration (m; see <see cref="ShapeMatchingCalibration"/>).</summary>
         public float CalibrationLength;
+        /// <summary>How the body carries its load, for the shape-matching calibration.</summary>
+        public ShapeMatchingCalibration.Load CalibrationLoad = ShapeMatchingCalibration.Load.Bending;
         /// <summary>
         /// Angular frequency (rad/s) of the mode the material's damping ratio ζ refers to, for methods whose damping is set at a
         /// reference frequency (FEM's Rayleigh β = 2ζ/ω_ref); 0 = the method's own estimate.
@@ -56,7 +58,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public MethodBodySetup With(ElasticMaterial material) => new MethodBodySetup
         {
             Mesh = Mesh, Material = material, Pinned = Pinned, ParticleRadius = ParticleRadius, Friction = Friction,
-            CalibrationLength = CalibrationLength, DampingFrequency = DampingFrequency,
+            CalibrationLength = CalibrationLength, CalibrationLoad = CalibrationLoad, DampingFrequency = DampingFrequency,
         };
 
         /// <summary>A copy with another material whose ζ refers to the mode at <paramref name="dampingFrequency"/> (rad/s).</summary>

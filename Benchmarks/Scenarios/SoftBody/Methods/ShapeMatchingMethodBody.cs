@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ClusterSet clusters = ClusterBuilder.Build(setup.Mesh.Positions, ClusterCells * cellSize * 1.001f);
             m_Model = ShapeMatchingModelData.Create(setup.Mesh.Positions, masses, clusters.Offsets, clusters.Particles,
                 mode == ShapeMatchingMode.Quadratic, setup.Pinned);
-            ShapeMatchingParameters p = ShapeMatchingCalibration.For(setup.Material, setup.CalibrationLength, mode, ShapeMatchingParameters.Default);
+            ShapeMatchingParameters p = ShapeMatchingCalibration.For(setup.Material, setup.CalibrationLength, setup.CalibrationLoad, mode, ShapeMatchingParameters.Default);
             if (!float.IsNaN(frequency))
                 p.Frequency = frequency;
             p.Substeps = substeps;

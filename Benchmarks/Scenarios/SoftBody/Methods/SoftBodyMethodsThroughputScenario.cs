@@ -64,6 +64,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 Material = ElasticMaterial.Jelly,
                 ParticleRadius = radius,
                 CalibrationLength = BodySize,
+                CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
             };
             m_Body = m_Variant.Create(setup, CellSize);
             m_Colliders = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };

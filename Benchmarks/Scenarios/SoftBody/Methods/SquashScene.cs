@@ -73,6 +73,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ParticleRadius = 0f,
             Friction = 0f,
             CalibrationLength = Size,
+            CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
         };
 
         /// <summary>One timed frame: a free step of the released cube; every <see cref="StudyScene.FramesPerCycle"/> frames it is squashed again.</summary>

@@ -86,13 +86,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                           "shape deviation over the cube size, or the resets. 'reset' = the guard reset the body once (the state written, or an " +
                           "explicit method above its stable step blowing up at the first motion) and it then stayed at its rest shape.");
             md.AppendLine();
-            float asked = ShapeMatchingCalibration.Frequency(cube.Pinned.Material, cube.Pinned.CalibrationLength,
-                ShapeMatchingCalibration.LinearCoefficient);
-            if (asked > ShapeMatchingParameters.MaxFrequency)
-                md.AppendLine($"Shape matching: the calibrated frequency of this material, {asked:0} Hz, is above ShapeMatchingParameters.MaxFrequency " +
-                              $"and runs at {ShapeMatchingParameters.MaxFrequency:0} Hz (about {asked * asked / (ShapeMatchingParameters.MaxFrequency * ShapeMatchingParameters.MaxFrequency):0}× " +
-                              "softer than asked); at one substep its goal pull nearly vanishes where f·dt is a whole number (dt = 1, 2, 3 … ms), where " +
-                              "the cube sags freely under gravity.");
+            ShapeMatchingParameters sm = ShapeMatchingCalibration.For(cube.Pinned.Material, cube.Pinned.CalibrationLength, cube.Pinned.CalibrationLoad,
+                ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
+            md.AppendLine($"Shape matching is calibrated for a compact body in compression: f = {sm.Frequency:0} Hz, ζ = {sm.DampingRatio:0.###}.");
             md.AppendLine();
             md.Append("| method | dt_max | explicit bound | inverted | flattened | huge step | NaN input | compute per simulated s at dt_max |");
             md.AppendLine();

@@ -51,10 +51,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Cells = cells;
             Compression = compression;
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(size), new int3(cells), float3.zero);
-            Free = new MethodBodySetup { Mesh = mesh, Material = material, CalibrationLength = size };
+            Free = new MethodBodySetup
+            {
+                Mesh = mesh, Material = material, CalibrationLength = size, CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
+            };
             Pinned = new MethodBodySetup
             {
-                Mesh = mesh, Material = material, CalibrationLength = size,
+                Mesh = mesh, Material = material, CalibrationLength = size, CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
                 Pinned = StudyBox.NodesAt(mesh, 1, -0.5f * size, 1e-3f * size / cells),
             };
             m_MassSpringStep = ComputeMassSpringStep(Pinned);
