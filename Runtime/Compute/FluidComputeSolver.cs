@@ -169,14 +169,15 @@ namespace SoftBodyDynamics.Compute
             if (!(dt > 0f) || !math.isfinite(dt))
                 return 0;
             var self = this;
-            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, dt));
-            int2 substeps = FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt);
-            float h = dt / substeps.y;
+            FluidSolver.Plan plan = FluidSolver.PlanOf(dt,
+                FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt));
+            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
             int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
-            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(h, dt), substeps.y, passes.Slice(0, passCount));
+            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, plan.SimulatedTime), plan.Substeps,
+                passes.Slice(0, passCount));
             RequestStats();
-            return substeps.y;
+            return plan.Substeps;
         }
 
         /// <summary>Takes the counters of a completed read-back (polled, never waited for) and asks for the next one.</summary>

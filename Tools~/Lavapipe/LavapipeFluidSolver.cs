@@ -193,14 +193,15 @@ namespace SoftBodyDynamics.Lavapipe
             var self = this;
             if (!(dt > 0f) || !math.isfinite(dt))
                 return FluidSolver.Finish(new FluidSolver.Plan(), new FluidPassCounters(), dt, Count, ref status);
-            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, dt));
+            // The fastest speed of the step's start sets the plan (no ageing yet); the second begin ages by the time the plan simulates.
+            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, 0f));
             Flush();
             float maxSpeed = math.min(math.sqrt(math.asfloat(Stats[FluidComputeLayout.StatMaxSpeedSquared])), m_Constants.Parameters.MaxSpeed);
-            int2 substeps = FluidSolver.Substeps(m_Constants, maxSpeed, dt);
-            var plan = new FluidSolver.Plan { Substeps = substeps.y, SubstepsWanted = substeps.x, H = dt / substeps.y };
+            FluidSolver.Plan plan = FluidSolver.PlanOf(dt, FluidSolver.Substeps(m_Constants, maxSpeed, dt));
+            FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
             int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
-            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, dt), plan.Substeps, passes.Slice(0, passCount));
+            FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, plan.SimulatedTime), plan.Substeps, passes.Slice(0, passCount));
             Flush();
             return FluidSolver.Finish(plan, Counters(), dt, Count, ref status);
         }

@@ -320,21 +320,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     continue;
                 if (!header)
                 {
-                    md.AppendLine("| Hard case | finite, in box | alive | invalid removed | max speed (m/s) | speed clamped | over-compressed | neighbour overflow | max ρ/ρ₀ | substeps wanted / run | spread (Δx) |");
-                    md.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|");
+                    md.AppendLine("| Hard case | finite, in box | alive | invalid removed | max speed (m/s) | speed clamped | over-compressed | neighbour overflow | max ρ/ρ₀ (after frame 1) | substeps wanted / run | time simulated | spread (Δx) |");
+                    md.AppendLine("|---|---|---|---|---|---|---|---|---|---|---|---|");
                     header = true;
                 }
                 double fall = r.Value("free-fall error");
-                md.AppendLine(F("| {0} | {1}, {2} | {3:0} | {4:0} | {5:0.00} | {6:0} | {7:0} | {8:0} | {9:0.00} | {10:0} / {11:0} | {12} |", r.Method,
+                md.AppendLine(F("| {0} | {1}, {2} | {3:0} | {4:0} | {5:0.00} | {6:0} | {7:0} | {8:0} | {9:0.00} ({10:0.00}) | {11:0} / {12:0} | {13:0.###} | {14} |", r.Method,
                     r.Value("finite") == 1 ? "yes" : "NO", r.Value("in box") == 1 ? "yes" : "NO", r.Value("alive"), r.Value("invalid removed"),
                     r.Value("max speed"), r.Value("speed clamped"), r.Value("over-compressed"), r.Value("neighbour overflow"), r.Value("max density ratio"),
-                    r.Value("substeps wanted"), r.Value("substeps run"),
+                    r.Value("late max density ratio"), r.Value("substeps wanted"), r.Value("substeps run"), r.Value("simulated"),
                     double.IsNaN(fall) ? F("{0:0.0}", r.Value("spread")) : F("– (free fall {0:0.00} % off ½gt²)", 100 * fall)));
             }
             if (header)
             {
                 md.AppendLine();
-                md.AppendLine("Counters are particle-substeps summed over the run; 'substeps wanted / run' is the largest per frame (the cap is 32).");
+                md.AppendLine("Counters are particle-substeps summed over the run; 'substeps wanted / run' is the largest per frame (the cap is 32); " +
+                              "'time simulated' is the fraction of the asked time the fluid advanced (below 1: a capped frame ran in slow motion).");
             }
         }
     }

@@ -24,7 +24,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// A hard case for one solver, in a 0.4 m box of water at Δx = 2 cm: each Step runs the case from its start and sums what
     /// the step reports (<see cref="FluidStepReport"/>); Evaluate says whether every particle is finite and in the box, how
     /// many are alive and were removed as invalid, and the report's counters (speed clamps, over-compressed and
-    /// neighbour-overflow particle-substeps, the largest density ratio, substeps wanted against run). An item is one
+    /// neighbour-overflow particle-substeps, the largest density ratio, and after the first frame, substeps wanted against run,
+    /// and the fraction of the asked time simulated: below 1 when the substep cap held a frame back). An item is one
     /// particle-substep.
     /// </summary>
     public sealed class FluidHardCaseScenario : IScenario, IScenarioRepeatCap, IScenarioShortWarmup
@@ -42,7 +43,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         int m_Particles;
         long m_SpeedClamped, m_OverCompressed, m_NeighbourOverflow;
         int m_SubstepsWanted, m_SubstepsRun;
-        float m_MaxDensityRatio;
+        float m_MaxDensityRatio, m_LateMaxDensityRatio;
+        int m_Frames;
+        double m_Asked, m_Simulated;
         double m_FreeFallError, m_Spread;
 
         public FluidHardCaseScenario(FluidHardCase hardCase, FluidSolverKind solver)
@@ -95,7 +98,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Items = 0;
             m_SpeedClamped = m_OverCompressed = m_NeighbourOverflow = 0;
             m_SubstepsWanted = m_SubstepsRun = 0;
-            m_MaxDensityRatio = 0f;
+            m_MaxDensityRatio = m_LateMaxDensityRatio = 0f;
+            m_Frames = 0;
+            m_Asked = m_Simulated = 0;
             switch (m_Case)
             {
                 case FluidHardCase.Isolated:
@@ -181,6 +186,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_OverCompressed += r.OverCompressed;
             m_NeighbourOverflow += r.NeighbourOverflow;
             m_MaxDensityRatio = math.max(m_MaxDensityRatio, r.MaxDensityRatio);
+            if (m_Frames++ > 0)
+                m_LateMaxDensityRatio = math.max(m_LateMaxDensityRatio, r.MaxDensityRatio);
+            m_Asked += dt;
+            m_Simulated += r.SimulatedTime;
             m_SubstepsWanted = Math.Max(m_SubstepsWanted, r.SubstepsWanted);
             m_SubstepsRun = Math.Max(m_SubstepsRun, r.Substeps);
         }
@@ -210,6 +219,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 new Metric("over-compressed", m_OverCompressed, MetricUnit.Count),
                 new Metric("neighbour overflow", m_NeighbourOverflow, MetricUnit.Count),
                 new Metric("max density ratio", m_MaxDensityRatio, MetricUnit.Dimensionless),
+                new Metric("late max density ratio", m_LateMaxDensityRatio, MetricUnit.Dimensionless),
+                new Metric("simulated", m_Asked > 0 ? m_Simulated / m_Asked : 1.0, MetricUnit.Fraction),
                 new Metric("substeps wanted", m_SubstepsWanted, MetricUnit.Count),
                 new Metric("substeps run", m_SubstepsRun, MetricUnit.Count),
                 new Metric("spread", m_Spread, MetricUnit.ParticleSpacing),

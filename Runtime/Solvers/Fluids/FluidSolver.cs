@@ -5,8 +5,10 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// One step of a particle fluid, the single-threaded reference that the jobs reproduce pass by pass
-    /// (<see cref="FluidPasses"/>). A step of dt runs n = ⌈dt / h_CFL⌉ substeps (at most
-    /// <see cref="FluidParameters.MaxSubsteps"/>, reported when capped). Each substep:
+    /// (<see cref="FluidPasses"/>). A step of dt runs n = ⌈dt / h_CFL⌉ substeps of h = dt / n. When n is above
+    /// <see cref="FluidParameters.MaxSubsteps"/> the step runs the cap's substeps of the same h and so simulates less than dt
+    /// (slow motion, reported in <see cref="FluidStepReport.SimulatedTime"/>): stretching them to dt would break the CFL
+    /// limit and compress the fluid many times over. Each substep:
     /// <list type="bullet">
     /// <item>weakly compressible: keys → counting sort (drops removed particles) → density and Tait pressure →
     /// forces (pressure, gravity, walls, cohesion) → implicit viscosity → alignment → advect → colliders;</item>
@@ -43,6 +45,20 @@ namespace SoftBodyDynamics.Solvers
             return new int2(wanted, math.min(wanted, c.Parameters.MaxSubsteps));
         }
 
+        /// <summary>
+        /// The plan of a step of <paramref name="dt"/> with (wanted, used) <paramref name="substeps"/>: substeps of
+        /// h = dt / wanted, so that a capped step simulates used · h &lt; dt instead of breaking the CFL limit.
+        /// </summary>
+        public static Plan PlanOf(float dt, int2 substeps)
+        {
+            float h = dt / substeps.x;
+            return new Plan
+            {
+                Substeps = substeps.y, SubstepsWanted = substeps.x, H = h,
+                SimulatedTime = substeps.y < substeps.x ? substeps.y * h : dt,
+            };
+        }
+
         /// <summary>The substeps of one step, fixed at its start (<see cref="Begin"/>).</summary>
         public struct Plan
         {
@@ -50,8 +66,10 @@ namespace SoftBodyDynamics.Solvers
             public int Substeps;
             /// <summary>Substeps the CFL limit asked for (above <see cref="Substeps"/> when capped).</summary>
             public int SubstepsWanted;
-            /// <summary>Substep length h = dt / Substeps (s); 0 when the step does nothing.</summary>
+            /// <summary>Substep length h = dt / <see cref="SubstepsWanted"/> (s); 0 when the step does nothing.</summary>
             public float H;
+            /// <summary>Time the step simulates (s): dt, or Substeps · H when the cap held it back (slow motion).</summary>
+            public float SimulatedTime;
         }
 
         /// <summary>
@@ -65,8 +83,6 @@ namespace SoftBodyDynamics.Solvers
             status.Count = count;
             if (!(dt > 0f) || !math.isfinite(dt))
                 return new Plan();
-            for (int i = 0; i < count; i++)
-                p.Ages[i] += dt;
             // A non-finite speed belongs to a particle the first sort removes: it must not set the substeps.
             float maxSpeed = 0f;
             for (int i = 0; i < count; i++)
@@ -76,8 +92,10 @@ namespace SoftBodyDynamics.Solvers
                     maxSpeed = v2;
             }
             maxSpeed = math.min(math.sqrt(maxSpeed), c.Parameters.MaxSpeed);
-            int2 substeps = Substeps(c, maxSpeed, dt);
-            return new Plan { Substeps = substeps.y, SubstepsWanted = substeps.x, H = dt / substeps.y };
+            Plan plan = PlanOf(dt, Substeps(c, maxSpeed, dt));
+            for (int i = 0; i < count; i++)
+                p.Ages[i] += plan.SimulatedTime;
+            return plan;
         }
 
         /// <summary>Closes a step: the live count, time and removal totals into the status, the counters into the report.</summary>
@@ -85,7 +103,7 @@ namespace SoftBodyDynamics.Solvers
         {
             status.Count = count;
             if (plan.Substeps > 0)
-                status.Time += dt;
+                status.Time += plan.SimulatedTime;
             status.Killed += counters.Killed;
             status.Expired += counters.Expired;
             status.Invalid += counters.Invalid;
@@ -93,6 +111,7 @@ namespace SoftBodyDynamics.Solvers
             {
                 Substeps = plan.Substeps,
                 SubstepsWanted = plan.SubstepsWanted,
+                SimulatedTime = plan.SimulatedTime,
                 Killed = counters.Killed,
                 Expired = counters.Expired,
                 Invalid = counters.Invalid,

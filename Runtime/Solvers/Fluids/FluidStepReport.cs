@@ -7,6 +7,8 @@ namespace SoftBodyDynamics.Solvers
         public int Substeps;
         /// <summary>Substeps the CFL limit asked for; above <see cref="Substeps"/> when the cap <see cref="FluidParameters.MaxSubsteps"/> held it back.</summary>
         public int SubstepsWanted;
+        /// <summary>Time simulated (s): the step's dt, or Substeps / SubstepsWanted of it when the cap held it back (slow motion).</summary>
+        public float SimulatedTime;
         /// <summary>Particle-substeps in which a speed above <see cref="FluidParameters.MaxSpeed"/> was slowed to it.</summary>
         public int SpeedClamped;
         /// <summary>Particle-substeps with ρ/ρ₀ above <see cref="FluidParameters.MaxDensityRatio"/>.</summary>

@@ -223,23 +223,50 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.AreEqual(atRest, r.Substeps);
         }
 
+        /// <summary>
+        /// A 1 s step of a resting block asks for far more substeps than the cap. The step runs the cap's substeps at the CFL
+        /// length h = dt / wanted, so it simulates MaxSubsteps · h &lt; dt (slow motion, reported, in the status's time) and the
+        /// fluid stays what it is: below the solver's own over-compression bound <see cref="FluidParameters.MaxDensityRatio"/>
+        /// (1.5 ρ₀) in every step, with no over-compressed particle-substep. Stretching the capped substeps to dt compressed it
+        /// to 95–195 ρ₀.
+        /// </summary>
         [Test]
-        public void HugeStep_IsCappedReportedAndFinite()
+        public void HugeStep_RunsInSlowMotion_AndKeepsTheFluid()
         {
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 500, float3.zero, new float3(0.2f, 0.2f, 0.2f));
-            FluidStepReport r = FluidTestScenes.Step(c, b, 1f);
-            Assert.AreEqual(p.MaxSubsteps, r.Substeps);
-            Assert.That(r.SubstepsWanted, Is.GreaterThan(r.Substeps));
-            for (int f = 0; f < 5; f++)
-                FluidTestScenes.Step(c, b, 1f);
+            double time = 0;
+            for (int f = 0; f < 6; f++)
+            {
+                FluidStepReport r = FluidTestScenes.Step(c, b, 1f);
+                Assert.AreEqual(p.MaxSubsteps, r.Substeps);
+                Assert.That(r.SubstepsWanted, Is.GreaterThan(r.Substeps));
+                Assert.That(r.MaxDensityRatio, Is.LessThanOrEqualTo(p.MaxDensityRatio), $"step {f}");
+                Assert.AreEqual(0, r.OverCompressed, $"step {f}");
+                Assert.That(r.SimulatedTime, Is.EqualTo(r.Substeps * (1.0 / r.SubstepsWanted)).Within(1e-6));
+                time += r.SimulatedTime;
+            }
+            Assert.That(b.Status.Time, Is.EqualTo(time).Within(1e-5));
             for (int i = 0; i < b.Status.Count; i++)
             {
                 Assert.That(math.all(math.isfinite(b.Positions[i])));
                 Assert.That(math.all(b.Positions[i] >= p.DomainMin) && math.all(b.Positions[i] <= p.DomainMax));
                 Assert.That(math.length(b.Velocities[i]), Is.LessThanOrEqualTo(p.MaxSpeed * 1.0001f));
             }
+        }
+
+        /// <summary>An uncapped step simulates exactly its dt.</summary>
+        [Test]
+        public void UncappedStep_SimulatesItsWholeStep()
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 500, float3.zero, new float3(0.2f, 0.2f, 0.2f));
+            FluidStepReport r = FluidTestScenes.Step(c, b, 1f / 60f);
+            Assert.AreEqual(r.SubstepsWanted, r.Substeps);
+            Assert.AreEqual(1f / 60f, r.SimulatedTime);
+            Assert.AreEqual(1f / 60f, b.Status.Time);
         }
 
         [Test]

@@ -137,6 +137,33 @@ namespace SoftBodyDynamics.Tests.Compute
                 "substeps (they follow the fastest particle, one extreme of a chaotic flow: 5 % of the total is allowed)");
         }
 
+        /// <summary>
+        /// A 1 s step of a resting block, capped: the GPU plans it as the CPU does (the cap's substeps of the CFL length, so
+        /// it simulates less than dt), ages every particle by the simulated time, and keeps the fluid below the
+        /// over-compression bound.
+        /// </summary>
+        [Test]
+        public void HugeStep_RunsInSlowMotionLikeTheCpu()
+        {
+            FluidParameters p = FluidParameters.Default;
+            FluidBuffers cpu = FluidScene.BlockInBox(p, 0.02f, new float3(0.2f, 0.4f, 0.2f), new float3(0.2f, 0.2f, 0.2f), out FluidConstants c);
+            FluidBuffers start = FluidScene.BlockInBox(p, 0.02f, new float3(0.2f, 0.4f, 0.2f), new float3(0.2f, 0.2f, 0.2f), out _);
+            FluidStepReport expected = FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, 1f, cpu.Particles, cpu.Scratch, ref cpu.Status);
+            Assert.That(expected.Substeps, Is.LessThan(expected.SubstepsWanted), "the step must be capped");
+            using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, start.Capacity);
+            g.Upload(start.Particles, start.Status.Count);
+            FluidStepReport r = g.Step(1f, ref start.Status);
+            Lavapipe.AssertValid();
+            Assert.That(r.Substeps, Is.EqualTo(expected.Substeps));
+            Assert.That(r.SubstepsWanted, Is.EqualTo(expected.SubstepsWanted));
+            Assert.That(r.SimulatedTime, Is.EqualTo(expected.SimulatedTime));
+            Assert.That(start.Status.Time, Is.EqualTo(cpu.Status.Time));
+            Assert.That(r.MaxDensityRatio, Is.LessThanOrEqualTo(p.MaxDensityRatio));
+            FluidBuffers back = GpuState.Download(g, c, start.Capacity, c.Grid.CellCount);
+            for (int i = 0; i < back.Status.Count; i++)
+                Assert.That(back.Ages[i], Is.EqualTo(expected.SimulatedTime), $"particle {i}");
+        }
+
         [TestCase(0)]
         [TestCase(1)]
         [TestCase(65)]
