@@ -43,7 +43,7 @@ namespace SoftBodyDynamics.Authoring
         [Min(0f)]
         public float restDensity = 1000f;
 
-        [Tooltip("Weakly compressible: numerical speed of sound c₀ (m/s). About 10× the fastest flow keeps the density error near 1 %; the substep shrinks as c₀ grows. Default 10 m/s.")]
+        [Tooltip("Weakly compressible: numerical speed of sound c₀ (m/s). 10·√(v² + gH) for the fastest flow v and depth H keeps the density error near 1 %; the substep shrinks as c₀ grows. Default 10 m/s (about 10 cm of still water).")]
         [Min(0f)]
         public float speedOfSound = 10f;
 

@@ -18,7 +18,8 @@ namespace SoftBodyDynamics.Solvers
         public float RestDensity;
         /// <summary>
         /// Weakly compressible: numerical speed of sound c₀ (m/s); the Tait stiffness is B = ρ₀c₀²/γ. Density error is
-        /// about (v_max / c₀)², so c₀ = 10·v_max keeps it near 1 %. The substep is at most
+        /// about (v_max² + gH)/c₀² for flow speed v_max and depth H, so c₀ = 10·√(v_max² + gH) keeps it near 1 % (the default
+        /// 10 m/s: water about 10 cm deep at rest). The substep is at most
         /// <see cref="CflNumber"/>·h / (c₀ + v_max), so a stiffer fluid costs more substeps. Default 10 m/s.
         /// </summary>
         public float SpeedOfSound;

@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Solvers
             if (!(p.RestDensity > 0f) || !math.isfinite(p.RestDensity))
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidDensityInvalid, -1, $"Rest density must be positive, in kg/m³ (water 1000; is {p.RestDensity})."));
             if (!(p.SpeedOfSound > 0f) || !(p.SpeedOfSound <= MaxSpeedOfSound))
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidSpeedOfSoundInvalid, -1, $"Speed of sound must be in (0, {MaxSpeedOfSound}] m/s (is {p.SpeedOfSound}); about 10× the fastest flow speed keeps the density error near 1 %."));
+                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidSpeedOfSoundInvalid, -1, $"Speed of sound must be in (0, {MaxSpeedOfSound}] m/s (is {p.SpeedOfSound}); 10·√(v² + gH) for the fastest flow v and depth H keeps the density error near 1 %."));
             float3 extent = p.DomainMax - p.DomainMin;
             float h = p.ParticleSpacing * p.KernelRadiusRatio;
             if (!math.all(math.isfinite(extent)) || math.any(extent < h))
