@@ -126,7 +126,7 @@ namespace SoftBodyDynamics.Solvers
             rigidFallback = false;
             float3x3 strain = aLinear - rotation;
             float massLengthSquared = totalMass * lengthScale * lengthScale;
-            float fitGap = Dot(math.mul(strain, math.inverse(aqqInverse)), strain);
+            float fitGap = Matrix3.Dot(math.mul(strain, math.inverse(aqqInverse)), strain);
             float weight = math.saturate(beta) * BetaFade(det) * StrainLimit(fitGap, massLengthSquared);
             float3x3 t = rotation + weight * strain;
             float j = math.determinant(aLinear);
@@ -150,8 +150,6 @@ namespace SoftBodyDynamics.Solvers
             const float max = MaxGoalStrain * MaxGoalStrain;
             return strainSquared > max ? MaxGoalStrain / math.sqrt(strainSquared) : 1f; // NaN → 1: the fade and guard handle it
         }
-
-        static float Dot(in float3x3 a, in float3x3 b) => math.dot(a.c0, b.c0) + math.dot(a.c1, b.c1) + math.dot(a.c2, b.c2);
 
         /// <summary>The strain scaled down to a Frobenius norm of at most <see cref="MaxGoalStrain"/>.</summary>
         public static float3x3 LimitStrain(in float3x3 strain)

@@ -163,9 +163,9 @@ namespace SoftBodyDynamics.Solvers
             // displacement in a uniformly filled cluster (u = C(x² − ⟨x²⟩): 4⟨x²⟩/(⟨x⁴⟩ − ⟨x²⟩²) = 15 at ⟨x²⟩ = 1/3, ⟨x⁴⟩ = 1/5).
             // 2(E_R − E_A) = ⟨A, Ã_pq,₀⟩ − 2⟨R, Ã_pq,₀⟩ + tr(A_qq), 2(E_A − E_Ã) = Σⱼ ⟨Ãⱼ, Ã_pq,ⱼ⟩ − ⟨A, Ã_pq,₀⟩ (scaled by 1/L).
             float weight = fade * math.saturate(p.Beta);
-            float linearFit = Dot(aLinear, p0);
-            float linearGap = linearFit - 2f * Dot(r, p0) + restSpread;
-            float quadraticGap = Dot(t0, p0) + Dot(t1, p1) + Dot(t2, p2) - linearFit;
+            float linearFit = Matrix3.Dot(aLinear, p0);
+            float linearGap = linearFit - 2f * Matrix3.Dot(r, p0) + restSpread;
+            float quadraticGap = Matrix3.Dot(t0, p0) + Matrix3.Dot(t1, p1) + Matrix3.Dot(t2, p2) - linearFit;
             float c1 = weight * VolumePreservation.StrainLimit(linearGap, cluster.Rest.TotalMass);
             float c2 = weight * VolumePreservation.StrainLimit(k_QuadraticStrainPerDisplacement * quadraticGap, cluster.Rest.TotalMass);
             float3x3 g0 = r + c1 * (aLinear - r) + c2 * (t0 - aLinear), g1 = c2 * t1, g2 = c2 * t2;
@@ -202,8 +202,6 @@ namespace SoftBodyDynamics.Solvers
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         static float3 RestOffset(float3 rest, float3 restCenter, in float3x3 sp, bool usePlastic) =>
             usePlastic ? math.mul(sp, rest - restCenter) : rest - restCenter;
-
-        static float Dot(in float3x3 a, in float3x3 b) => math.dot(a.c0, b.c0) + math.dot(a.c1, b.c1) + math.dot(a.c2, b.c2);
 
         static bool IsIdentity(in float3x3 m) =>
             m.c0.x == 1f && m.c1.y == 1f && m.c2.z == 1f && m.c0.y == 0f && m.c0.z == 0f
