@@ -119,7 +119,7 @@ namespace SoftBodyDynamics.Authoring
         [Min(1)]
         public int readbackInterval = 10;
 
-        [Tooltip("Coulomb friction against colliders (0 = free slip).")]
+        [Tooltip("Coulomb friction μ against colliders and the domain walls (0 = free slip; a particle resting on a wall slides with deceleration μg).")]
         [Min(0f)]
         public float wallFriction;
 

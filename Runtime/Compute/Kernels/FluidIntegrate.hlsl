@@ -100,8 +100,9 @@ void Move(uint i, float3 v)
         v *= maxSpeed / sqrt(speed2);
         InterlockedAdd(_Stats[STAT_SPEED_CLAMPED], 1);
     }
+    float3 start = x;
     x += h * v;
-    ClampToDomain(x, v);
+    ClampToDomain(x, v, start);
     _Positions[i] = float4(x, xa.w);
     _Velocities[i] = float4(v, _Velocities[i].w);
 }

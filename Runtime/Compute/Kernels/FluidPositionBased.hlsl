@@ -80,7 +80,7 @@ void ApplyCorrection(uint3 id : SV_DispatchThreadID)
     float4 xa = _Positions[i];
     float3 x = xa.xyz + _VectorsA[i].xyz;
     float3 v = _Velocities[i].xyz;
-    ClampToDomain(x, v);
+    ClampToDomain(x, v, _Previous[i].xyz);
     _Positions[i] = float4(x, xa.w);
 }
 

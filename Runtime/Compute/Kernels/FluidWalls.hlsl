@@ -62,19 +62,35 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
     densityFraction = 1.0 - inside;
 }
 
-// FluidBoundary.ClampToDomain: keeps x a wall distance inside the box and removes the velocity into a face it touches.
-void ClampToDomain(inout float3 x, inout float3 v)
+// FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,
+// with wall friction μ, cancels the motion along the faces since start by at most μ × the depth (and the velocity by that share).
+void ClampToDomain(inout float3 x, inout float3 v, float3 start)
 {
     float3 lo = _DomainMin.xyz + _DomainMin.w;
     float3 hi = _DomainMax.xyz - _DomainMin.w;
     float3 clamped = clamp(x, lo, hi);
     if (all(clamped == x)) return;
+    float3 depth = max(lo - x, 0.0) + max(x - hi, 0.0);
     [unroll] for (int a = 0; a < 3; a++)
     {
         if (x[a] < lo[a]) v[a] = max(v[a], 0.0);
         else if (x[a] > hi[a]) v[a] = min(v[a], 0.0);
     }
     x = clamped;
+    float friction = _Colliding.x;
+    if (friction > 0.0)
+    {
+        float3 along = float3(depth.x > 0.0 ? 0.0 : 1.0, depth.y > 0.0 ? 0.0 : 1.0, depth.z > 0.0 ? 0.0 : 1.0);
+        float3 tangential = (x - start) * along;
+        float slide = length(tangential);
+        float limit = friction * (depth.x + depth.y + depth.z);
+        if (slide > 0.0)
+        {
+            float cut = min(1.0, limit / slide);
+            x -= tangential * cut;
+            v -= v * along * cut;
+        }
+    }
 }
 
 #endif

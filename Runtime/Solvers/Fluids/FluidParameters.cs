@@ -55,7 +55,7 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainMin;
         /// <summary>Upper corner of the domain box (m, world).</summary>
         public float3 DomainMax;
-        /// <summary>Coulomb friction coefficient μ of particle–collider contacts (0 = free slip): a contact cancels tangential motion up to μ × its depth.</summary>
+        /// <summary>Coulomb friction coefficient μ at the colliders and the domain walls (0 = free slip): a contact cancels tangential motion up to μ × its depth (a particle resting on a wall slides with deceleration μg).</summary>
         public float WallFriction;
         /// <summary>CFL number λ of the adaptive substep: h·λ / (c₀ + v_max) (weakly compressible) or h·λ / v_max (position-based). Default 0.4.</summary>
         public float CflNumber;

@@ -446,8 +446,9 @@ namespace SoftBodyDynamics.Solvers
                 v *= maxSpeed / math.sqrt(speed2);
                 counters.SpeedClamped++;
             }
+            float3 start = x;
             x += h * v;
-            FluidBoundary.ClampToDomain(c, ref x, ref v);
+            FluidBoundary.ClampToDomain(c, ref x, ref v, start);
             p.Positions[i] = x;
             p.Velocities[i] = v;
         }
@@ -529,7 +530,7 @@ namespace SoftBodyDynamics.Solvers
             {
                 float3 x = p.Positions[i] + s.VectorsA[i];
                 float3 v = p.Velocities[i];
-                FluidBoundary.ClampToDomain(c, ref x, ref v);
+                FluidBoundary.ClampToDomain(c, ref x, ref v, s.Previous[i]);
                 p.Positions[i] = x;
             }
         }

@@ -256,6 +256,37 @@ namespace SoftBodyDynamics.Tests.Solvers
             }
         }
 
+        /// <summary>
+        /// One particle resting on the domain floor, sliding at 1 m/s. Each substep gravity carries it g·h² into the floor
+        /// and the clamp cancels up to μ × that depth of its sliding, so its speed falls by μ·g·h per substep: Coulomb
+        /// friction, v(t) = v₀ − μgt until it stops (within one substep's μgh). Free slip (μ = 0) keeps v₀.
+        /// </summary>
+        [TestCase(FluidSolverKind.WeaklyCompressible, 0f)]
+        [TestCase(FluidSolverKind.WeaklyCompressible, 0.5f)]
+        [TestCase(FluidSolverKind.PositionBased, 0f)]
+        [TestCase(FluidSolverKind.PositionBased, 0.5f)]
+        public void DomainFloor_SlowsASlidingParticleAtMuG(FluidSolverKind solver, float mu)
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(2f, 0.4f, 0.4f));
+            p.Solver = solver;
+            p.WallFriction = mu;
+            var c = new FluidConstants(p);
+            var b = new FluidBuffers(1, c.Grid);
+            b.Positions[0] = new float3(0.2f, c.WallDistance, 0.2f);
+            b.Velocities[0] = new float3(1f, 0f, 0f);
+            b.Status = new FluidStatus { Count = 1, NextId = 1, Spawned = 1 };
+            double t = 0, largestSubstep = 0;
+            for (int f = 0; f < 6; f++)
+            {
+                FluidStepReport r = FluidTestScenes.Step(c, b, 1f / 60f);
+                t += r.SimulatedTime;
+                largestSubstep = Math.Max(largestSubstep, r.SimulatedTime / r.Substeps);
+            }
+            double expected = Math.Max(0.0, 1.0 - mu * 9.81 * t);
+            Assert.That(b.Velocities[0].x, Is.EqualTo(expected).Within(mu * 9.81 * largestSubstep + 1e-5));
+            Assert.That(b.Positions[0].y, Is.EqualTo(c.WallDistance).Within(1e-6));
+        }
+
         /// <summary>An uncapped step simulates exactly its dt.</summary>
         [Test]
         public void UncappedStep_SimulatesItsWholeStep()
