@@ -86,8 +86,8 @@ namespace SoftBodyDynamics.Solvers
             float invH = 1f / h;
             float radius = settings.Radius;
             Span<float3> leaving = stackalloc float3[MaxSharedColliders];
+            leaving = leaving.Slice(0, SharedColliders(colliders, settings));
             bool bodyLeaving = BodyLeaves(previous, colliders, settings, leaving);
-            leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
             for (int i = 0; i < predicted.Length; i++)
             {
                 float3 start = predicted[i];
@@ -184,7 +184,7 @@ namespace SoftBodyDynamics.Solvers
             in Settings settings)
         {
             Span<float3> leaving = stackalloc float3[MaxSharedColliders];
-            if (BodyLeaves(positions, colliders, settings, leaving))
+            if (BodyLeaves(positions, colliders, settings, leaving.Slice(0, SharedColliders(colliders, settings))))
             {
                 contactNormals.Clear();
                 return;
@@ -193,13 +193,16 @@ namespace SoftBodyDynamics.Solvers
                 contactNormals[i] = Touching(colliders, settings, positions[i], float3.zero);
         }
 
+        /// <summary>Colliders with a shared leaving direction: at most <see cref="MaxSharedColliders"/>, none without <see cref="Settings.WholeBody"/>.</summary>
+        static int SharedColliders(ReadOnlySpan<ColliderShape> colliders, in Settings settings) =>
+            settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0;
+
         /// <summary>
-        /// The whole-body leaving directions of <see cref="LeavingDirections"/> into <paramref name="leaving"/> (at most
-        /// <see cref="MaxSharedColliders"/>, none without <see cref="Settings.WholeBody"/>), and whether the body leaves any collider.
+        /// The whole-body leaving directions of <see cref="LeavingDirections"/> into <paramref name="leaving"/> (one per shared
+        /// collider, <see cref="SharedColliders"/>), and whether the body leaves any collider.
         /// </summary>
         static bool BodyLeaves(ReadOnlySpan<float3> previous, ReadOnlySpan<ColliderShape> colliders, in Settings settings, Span<float3> leaving)
         {
-            leaving = leaving.Slice(0, settings.WholeBody ? math.min(colliders.Length, MaxSharedColliders) : 0);
             if (leaving.Length == 0)
                 return false;
             LeavingDirections(previous, colliders, settings, leaving);

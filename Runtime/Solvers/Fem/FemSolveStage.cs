@@ -139,7 +139,7 @@ namespace SoftBodyDynamics.Solvers
                         : default;
                     int iterations = FemImplicitEuler.Solve(model, m_Parameters.Model, x, v, Rotations, tangents, m_Parameters.RotationIterations,
                         slots, body.Scratch, new Span<float3>(m_Work, FemState.WorkVectors * m_ParticleCount), WarmStart,
-                        constants.Contact.Friction == 0f ? body.ContactNormals : default, h, m_Beta,
+                        constants.Contact.KeepTouching ? body.ContactNormals : default, h, m_Beta,
                         m_Parameters.NewtonIterations, m_Parameters.CgIterations, m_Parameters.CgTolerance, out bool converged,
                         out float residual, out InvertedElements);
                     MaxCgIterations = math.max(MaxCgIterations, iterations);

@@ -61,15 +61,16 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// The per-step constants of (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>: fixed substeps, no
-        /// shared velocity damping; frictionless contacts kept while touching (the implicit solve holds them on the surface).
+        /// The per-step constants of (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/> for
+        /// <paramref name="integrator"/> (the effective one): fixed substeps, no shared velocity damping; for implicit Euler
+        /// without friction, contacts kept while touching, which its solve holds on the surface (<see cref="FemImplicitEuler"/>).
         /// </summary>
-        public static ParticleStepConstants Constants(in FemParameters p, float dt)
+        public static ParticleStepConstants Constants(in FemParameters p, FemIntegrator integrator, float dt)
         {
             int substeps = math.clamp(p.Substeps, 1, FemParameters.MaxSubsteps);
             ParticleStepConstants constants = ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction,
                 p.Restitution, p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
-            constants.Contact.KeepTouching = p.Friction == 0f;
+            constants.Contact.KeepTouching = integrator == FemIntegrator.ImplicitEuler && p.Friction == 0f;
             return constants;
         }
 
@@ -84,7 +85,7 @@ namespace SoftBodyDynamics.Solvers
                 IntegratorFallback = fallback, CgConverged = true };
             if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
                 return report;
-            ParticleStepConstants constants = Constants(p, dt);
+            ParticleStepConstants constants = Constants(p, integrator, dt);
             ParticleBody body = Body(model, state);
             float beta = DampingCoefficient(model, p);
             fixed (float3* rest = model.RestPositions)
