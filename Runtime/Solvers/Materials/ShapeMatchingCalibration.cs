@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Solvers
     /// <item><see cref="Load.Compression"/>, a compact body resting on its base (a cube on the floor, a squashed cube): f is
     /// the material's slowest mode, the quarter wave of a column of height H on its base, f = √(E/ρ) / (4H), and ζ_SM = ζ,
     /// the material's ratio for that mode. Overlapping clusters make the body softer than one cluster: its slowest mode
-    /// falls below f (a 4-cell cube of 2-cell clusters rings at 0.43 f) and its static sag grows with the clusters across
+    /// falls below f (a 4-cell cube of 2-cell clusters rings at 0.46 f) and its static sag grows with the clusters across
     /// (documented in Documentation~/choosing-a-method.md); those slower modes decay at the same rate ζω as f, so they are
     /// damped more, not less.</item>
     /// <item><see cref="Load.Bending"/>, a slender body held at one end: f = k √(E/ρ) / L with L = L_beam² / thickness
