@@ -51,6 +51,10 @@ namespace SoftBodyDynamics.Authoring
         [Range(0f, 1f)]
         public float artificialViscosity = 0.05f;
 
+        [Tooltip("Weakly compressible: bulk viscosity β (0–1): a pressure −ρ₀·β·c₀·h·∇·v that resists the rate of compression only, so a deep column stops its acoustic 'breathing' within seconds. Explicit: β = 1 at the default CFL number already adds noise. Default 0.5; 0 = off.")]
+        [Range(0f, 1f)]
+        public float bulkViscosity = 0.5f;
+
         [Tooltip("Position-based: density-constraint iterations per substep (1–100). Default 4.")]
         [Range(1, 100)]
         public int pressureIterations = 4;
@@ -143,6 +147,7 @@ namespace SoftBodyDynamics.Authoring
             p.KernelRadiusRatio = kernelRadiusRatio;
             p.SpeedOfSound = speedOfSound;
             p.ArtificialViscosity = artificialViscosity;
+            p.BulkViscosity = bulkViscosity;
             p.PressureIterations = pressureIterations;
             p.Gravity = new Unity.Mathematics.float3(0f, -9.81f * gravityScale, 0f);
             Unity.Mathematics.float3 centre = UnityMathConversions.ToFloat3(transform.position);

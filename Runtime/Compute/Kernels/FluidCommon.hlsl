@@ -65,7 +65,7 @@ float4 _Kernel2;         // cohesion coefficient, cohesion offset, viscosity Lap
 float4 _Material;        // particle mass (kg), ρ₀ (kg/m³), Tait stiffness B (Pa), max density ratio
 float4 _Motion;          // substep h (s), max speed (m/s), 2·α·c₀·h (artificial viscosity), position-based relaxation ε
 float4 _Cohesion;        // cohesion weight (1/s²), separation weight (1/s²), spacing (m), surface tension γ
-float4 _Smoothing;       // viscosity h·ν·2m·(Laplacian coefficient), alignment blend 1 − e^(−rate·h), step dt (s), unused
+float4 _Smoothing;       // viscosity h·ν·2m·(Laplacian coefficient), alignment blend 1 − e^(−rate·h), step dt (s), bulk-viscous scale (FluidConstants.BulkPressureScale)
 uint4 _Flags;            // x weakly compressible, y flocking, z Akinci, w unused
 uint4 _Counts;           // x capacity, y spawn count, z scan element count, w scan data offset
 uint4 _Scan;             // x index of the level's block totals in _ScanSums, yzw unused

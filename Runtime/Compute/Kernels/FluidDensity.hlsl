@@ -18,7 +18,7 @@ float StoreDensity(uint i, float3 xi, float kernelSum)
 }
 
 // Müller 2003 eq. 3 with the neighbour list; weakly compressible adds the Tait pressure (Becker & Teschner 2007,
-// eq. 6) of the density clamped to at least ρ₀, stored as p/ρ².
+// eq. 6) of the density clamped to at least ρ₀ and the bulk-viscous pressure, stored as p/ρ².
 [numthreads(FLUID_GROUP, 1, 1)]
 void Density(uint3 id : SV_DispatchThreadID)
 {
@@ -32,7 +32,9 @@ void Density(uint3 id : SV_DispatchThreadID)
     int y0 = max(c.y - 2, 0), y1 = min(c.y + 2, d.y - 1);
     int z0 = max(c.z - 2, 0), z1 = min(c.z + 2, d.z - 1);
     uint listStart = i * MAX_NEIGHBOURS, found = 0, overflow = 0;
-    float sum = 0.0;
+    float sum = 0.0, divergence = 0.0;
+    bool bulk = _Flags.x != 0 && _Smoothing.w > 0.0;
+    float3 vi = bulk ? _Velocities[i].xyz : float3(0.0, 0.0, 0.0);
     for (int z = z0; z <= z1; z++)
     for (int y = y0; y <= y1; y++)
     {
@@ -45,6 +47,12 @@ void Density(uint3 id : SV_DispatchThreadID)
             if (!(q > 0.0)) continue;
             sum += q * q * q;
             if (j == i) continue;
+            if (bulk)
+            {
+                float distance = sqrt(h2 - q);
+                float hr = _Kernel.x - distance;
+                if (distance > 0.0) divergence += dot(vi - _Velocities[j].xyz, r) * (hr * hr / distance);
+            }
             if (found < MAX_NEIGHBOURS) _Neighbours[listStart + found++] = j;
             else overflow++;
         }
@@ -59,6 +67,8 @@ void Density(uint3 id : SV_DispatchThreadID)
         float qr = rc / rho0;
         float q2 = qr * qr;
         float pressure = _Material.z * (q2 * q2 * q2 * qr - 1.0);
+        // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ (FluidConstants.BulkPressureScale in _Smoothing.w); the total stays ≥ 0.
+        if (bulk) pressure = max(pressure - _Smoothing.w * divergence / rho, 0.0);
         _Pressures[i] = pressure / (rc * rc);
     }
 }

@@ -30,6 +30,11 @@ namespace SoftBodyDynamics.Solvers
         /// lattice neighbours (V = m/ρ₀).
         /// </summary>
         public readonly float GradientCorrection;
+        /// <summary>
+        /// Weakly compressible: −ρ₀·ζ·m·(spiky gradient coefficient, negative)·κ∇, so that the bulk-viscous pressure
+        /// −ρ₀ζ·∇·vᵢ is this times the Density pass's divergence sum over ρᵢ; ζ = <see cref="FluidParameters.BulkViscosity"/>·c₀·h. 0 = off.
+        /// </summary>
+        public readonly float BulkPressureScale;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -45,6 +50,8 @@ namespace SoftBodyDynamics.Solvers
             float continuum = Kernels.WallDensityFraction(WallDistance);
             WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));
+            BulkPressureScale = -Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h * Mass
+                * Kernels.SpikyGradientCoefficient * GradientCorrection;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
         }
 

@@ -99,8 +99,9 @@ namespace SoftBodyDynamics.Solvers
             SphKernels k = c.Kernels;
             float rho0 = c.Parameters.RestDensity, h2 = k.H2;
             bool tait = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
+            bool bulk = tait && c.BulkPressureScale > 0f;
             const int cap = FluidScratch.MaxNeighbours;
-            ReadOnlySpan<float3> x = p.Positions;
+            ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
             ReadOnlySpan<int> cellStart = s.CellStart;
             Span<int> neighbours = s.Neighbours;
             for (int i = start; i < end; i++)
@@ -108,8 +109,10 @@ namespace SoftBodyDynamics.Solvers
                 float3 xi = x[i];
                 NeighbourRows rows = NeighbourRows.Find(c.Grid, cellStart, xi);
                 int listStart = i * cap, found = 0;
-                // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once.
-                float sum = 0f;
+                // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once. With bulk viscosity also
+                // Σ (vᵢ − vⱼ)·xᵢⱼ·(h − r)²/r, the spiky divergence sum (see BulkPressureScale).
+                float sum = 0f, divergence = 0f;
+                float3 vi = bulk ? velocities[i] : float3.zero;
                 for (int r = 0; r < rows.Count; r++)
                 {
                     int rowEnd = rows.End(r);
@@ -122,6 +125,13 @@ namespace SoftBodyDynamics.Solvers
                         sum += q * q * q;
                         if (j == i)
                             continue;
+                        if (bulk)
+                        {
+                            float distance = math.sqrt(h2 - q);
+                            float hr = k.H - distance;
+                            if (distance > 0f)
+                                divergence += math.dot(vi - velocities[j], d) * (hr * hr / distance);
+                        }
                         if (found < cap)
                             neighbours[listStart + found++] = j;
                         else
@@ -136,6 +146,9 @@ namespace SoftBodyDynamics.Solvers
                     float qr = rc / rho0;
                     float q2 = qr * qr;
                     float pressure = c.TaitStiffness * (q2 * q2 * q2 * qr - 1f);
+                    if (bulk)
+                        // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ; the total stays ≥ 0 like the Tait pressure, so expansion never pulls.
+                        pressure = math.max(pressure - c.BulkPressureScale * divergence / rho, 0f);
                     s.Pressures[i] = pressure / (rc * rc);
                 }
             }

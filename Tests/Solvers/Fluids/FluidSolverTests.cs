@@ -128,6 +128,29 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void DeepColumnAtDefaults_StopsBreathingWithin3Seconds()
+        {
+            // 0.12 × 0.4 × 0.12 m released on a lattice at ρ₀ (720 particles, defaults: c₀ = 10 m/s, Δx = 2 cm). Gravity
+            // compresses it by gH/c₀² ≈ 4 % at the floor, which starts the vertical acoustic mode (period 4H/c₀ = 0.16 s);
+            // a shear viscosity of α·h·c₀/10 damps that mode at νk² ≈ 0.03/s, so only the bulk viscosity can bring the
+            // kinetic energy under 1e-5 J/kg (the column's g·Δx·1e-4 J/kg, 0.4 mm/s RMS) within 3 s.
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.12f, 0.6f, 0.12f));
+            Assert.That(p.SpeedOfSound, Is.EqualTo(FluidParameters.Default.SpeedOfSound));
+            Assert.That(p.BulkViscosity, Is.EqualTo(FluidParameters.Default.BulkViscosity));
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 720, float3.zero, new float3(0.12f, 0.4f, 0.12f));
+            Assert.AreEqual(720, b.Status.Count);
+            for (int f = 0; f < 180; f++)
+                FluidTestScenes.Step(c, b, 1f / 60f);
+            double ke = 0;
+            for (int i = 0; i < b.Status.Count; i++)
+                ke += 0.5 * math.lengthsq(b.Velocities[i]);
+            ke /= b.Status.Count;
+            TestContext.WriteLine($"kinetic energy after 3 s: {ke:E2} J/kg");
+            Assert.That(ke, Is.LessThan(1e-5));
+        }
+
+        [Test]
         public void PositionBased_DensityErrorFallsWithIterations()
         {
             // Jacobi iterations of the density constraint converge: four times the iterations must leave a clearly
