@@ -47,12 +47,7 @@ void Density(uint3 id : SV_DispatchThreadID)
             if (!(q > 0.0)) continue;
             sum += q * q * q;
             if (j == i) continue;
-            if (bulk)
-            {
-                float distance = sqrt(h2 - q);
-                float hr = _Kernel.x - distance;
-                if (distance > 0.0) divergence += dot(vi - _Velocities[j].xyz, r) * (hr * hr / distance);
-            }
+            if (bulk) divergence += dot(vi - _Velocities[j].xyz, r) * (q * q);
             if (found < MAX_NEIGHBOURS) _Neighbours[listStart + found++] = j;
             else overflow++;
         }

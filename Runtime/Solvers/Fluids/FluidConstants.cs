@@ -31,8 +31,10 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public readonly float GradientCorrection;
         /// <summary>
-        /// Weakly compressible: −ρ₀·ζ·m·(spiky gradient coefficient, negative)·κ∇, so that the bulk-viscous pressure
-        /// −ρ₀ζ·∇·vᵢ is this times the Density pass's divergence sum over ρᵢ; ζ = <see cref="FluidParameters.BulkViscosity"/>·c₀·h. 0 = off.
+        /// Weakly compressible: the bulk-viscous pressure −ρ₀ζ·∇·vᵢ is this times D/ρᵢ, D = Σⱼ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)²
+        /// (the Density pass's sum): ∇·vᵢ = (m/ρᵢ)·Σⱼ (vⱼ − vᵢ)·∇W_poly6 = −6C·κ₆·(m/ρᵢ)·D with the poly6 gradient
+        /// ∇W = −6C(h² − r²)²·xᵢⱼ, no square root, and κ₆ its lattice correction (as <see cref="GradientCorrection"/>),
+        /// so the scale is ρ₀ζ·6C·κ₆·m with ζ = <see cref="FluidParameters.BulkViscosity"/>·c₀·h. 0 = off.
         /// </summary>
         public readonly float BulkPressureScale;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
@@ -50,8 +52,9 @@ namespace SoftBodyDynamics.Solvers
             float continuum = Kernels.WallDensityFraction(WallDistance);
             WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));
-            BulkPressureScale = -Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h * Mass
-                * Kernels.SpikyGradientCoefficient * GradientCorrection;
+            float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset, false));
+            BulkPressureScale = Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h
+                * 6f * Kernels.Poly6Coefficient * poly6Correction * Mass;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
         }
 
@@ -68,7 +71,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
         public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, false);
 
-        enum LatticeTerm { Poly6, GradientDotOffset }
+        enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset }
 
         /// <summary>A kernel term summed in double over the cubic lattice around a particle (only the layers k.z ≥ 1 when <paramref name="beyondWall"/>).</summary>
         static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall)
@@ -80,7 +83,14 @@ namespace SoftBodyDynamics.Solvers
             for (int x = -n; x <= n; x++)
             {
                 float r2 = spacing * spacing * (x * x + y * y + z * z);
-                sum += term == LatticeTerm.Poly6 ? kernels.Poly6(r2) : (double)kernels.SpikyGradientScale(math.sqrt(r2)) * r2;
+                double q = math.max(kernels.H2 - r2, 0f);
+                sum += term switch
+                {
+                    LatticeTerm.Poly6 => kernels.Poly6(r2),
+                    LatticeTerm.GradientDotOffset => (double)kernels.SpikyGradientScale(math.sqrt(r2)) * r2,
+                    // r·∇W_poly6 = −6C(h² − r²)²·r².
+                    _ => -6.0 * kernels.Poly6Coefficient * q * q * r2,
+                };
             }
             return (float)sum;
         }

@@ -110,7 +110,7 @@ namespace SoftBodyDynamics.Solvers
                 NeighbourRows rows = NeighbourRows.Find(c.Grid, cellStart, xi);
                 int listStart = i * cap, found = 0;
                 // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once. With bulk viscosity also
-                // Σ (vᵢ − vⱼ)·xᵢⱼ·(h − r)²/r, the spiky divergence sum (see BulkPressureScale).
+                // Σ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)², the poly6-gradient divergence up to its factor (FluidConstants.BulkPressureScale).
                 float sum = 0f, divergence = 0f;
                 float3 vi = bulk ? velocities[i] : float3.zero;
                 for (int r = 0; r < rows.Count; r++)
@@ -126,12 +126,7 @@ namespace SoftBodyDynamics.Solvers
                         if (j == i)
                             continue;
                         if (bulk)
-                        {
-                            float distance = math.sqrt(h2 - q);
-                            float hr = k.H - distance;
-                            if (distance > 0f)
-                                divergence += math.dot(vi - velocities[j], d) * (hr * hr / distance);
-                        }
+                            divergence += math.dot(vi - velocities[j], d) * (q * q);
                         if (found < cap)
                             neighbours[listStart + found++] = j;
                         else
