@@ -26,6 +26,8 @@ namespace SoftBodyDynamics.Compute
         bool m_ReadbackPending;
         AsyncGPUReadbackRequest m_Readback;
         float m_LastMaxSpeed;
+        /// <summary>Position-based: the depth of the last read-back (m), for the depth rule of the substeps.</summary>
+        float m_LastDepth;
 
         /// <summary>A solver for the fluid <paramref name="constants"/> with room for <paramref name="capacity"/> particles.</summary>
         public FluidComputeSolver(ComputeShader shader, in FluidConstants constants, int capacity)
@@ -170,7 +172,7 @@ namespace SoftBodyDynamics.Compute
                 return 0;
             var self = this;
             FluidSolver.Plan plan = FluidSolver.PlanOf(dt,
-                FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), dt));
+                FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), m_LastDepth, dt));
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
             int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
@@ -194,6 +196,7 @@ namespace SoftBodyDynamics.Compute
                     for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
                         m_Stats[i] = data[i];
                     m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
+                    m_LastDepth = FluidComputeLayout.DepthOf(m_Constants, m_Stats);
                 }
             }
             m_Readback = AsyncGPUReadback.Request(m_Buffers[(int)FluidComputeBuffer.Stats]);

@@ -197,7 +197,7 @@ namespace SoftBodyDynamics.Lavapipe
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, 0f));
             Flush();
             float maxSpeed = math.min(math.sqrt(math.asfloat(Stats[FluidComputeLayout.StatMaxSpeedSquared])), m_Constants.Parameters.MaxSpeed);
-            FluidSolver.Plan plan = FluidSolver.PlanOf(dt, FluidSolver.Substeps(m_Constants, maxSpeed, dt));
+            FluidSolver.Plan plan = FluidSolver.PlanOf(dt, FluidSolver.Substeps(m_Constants, maxSpeed, FluidComputeLayout.DepthOf(m_Constants, Stats), dt));
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
             int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);

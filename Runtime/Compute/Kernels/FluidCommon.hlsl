@@ -25,7 +25,10 @@
 #define STAT_TOTAL_KILLED 10
 #define STAT_TOTAL_EXPIRED 11
 #define STAT_TOTAL_INVALID 12
-#define STAT_COUNT 13
+// Position-based: the particles' highest height along −g and the lowest as a maximum of its mirror (BeginStep).
+#define STAT_MAX_HEIGHT 13
+#define STAT_MIN_HEIGHT_MIRRORED 14
+#define STAT_COUNT 15
 
 // Particle state (FluidParticles): ping-ponged by the permutation of the sort.
 RWStructuredBuffer<float4> _Positions;   // xyz position (m), w age (s)

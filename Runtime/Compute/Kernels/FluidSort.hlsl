@@ -10,10 +10,12 @@
 [numthreads(16, 1, 1)]
 void ClearStats(uint3 id : SV_DispatchThreadID)
 {
-    if (id.x > STAT_LIVE && id.x < STAT_TOTAL_KILLED) _Stats[id.x] = 0;
+    if ((id.x > STAT_LIVE && id.x < STAT_TOTAL_KILLED) || (id.x >= STAT_MAX_HEIGHT && id.x < STAT_COUNT)) _Stats[id.x] = 0;
 }
 
-// FluidSolver.Begin: ages += dt and the fastest finite speed (as the bits of v², which order like the floats).
+// FluidSolver.Begin: ages += dt and the fastest finite speed (as the bits of v², which order like the floats);
+// position-based also the extent along gravity (FluidSolver.Depth): height s = (x − DomainMin)·(−ĝ) in [−L, L],
+// L the domain's diagonal, kept as the maxima of s + L and L − s (non-negative, so their bits order like the floats).
 [numthreads(FLUID_GROUP, 1, 1)]
 void BeginStep(uint3 id : SV_DispatchThreadID)
 {
@@ -23,6 +25,17 @@ void BeginStep(uint3 id : SV_DispatchThreadID)
     float3 v = _Velocities[i].xyz;
     float v2 = dot(v, v);
     if (v2 > 0.0 && v2 <= FLOAT_MAX) InterlockedMax(_Stats[STAT_MAX_SPEED_SQUARED], asuint(v2));
+    float g = length(_Gravity.xyz);
+    if (_Flags.x == 0 && g > 0.0)
+    {
+        float s = dot(_Positions[i].xyz - _DomainMin.xyz, -_Gravity.xyz / g);
+        float L = length(_DomainMax.xyz - _DomainMin.xyz);
+        if (s >= -L && s <= L)
+        {
+            InterlockedMax(_Stats[STAT_MAX_HEIGHT], asuint(s + L));
+            InterlockedMax(_Stats[STAT_MIN_HEIGHT_MIRRORED], asuint(L - s));
+        }
+    }
 }
 
 // Zeroes the histogram: _Counts.z entries of _CellStart (cells + 2).

@@ -29,7 +29,24 @@ namespace SoftBodyDynamics.Solvers
         // _Stats slots (STAT_* in FluidCommon.hlsl).
         public const int StatLive = 0, StatKilled = 1, StatExpired = 2, StatInvalid = 3, StatSpeedClamped = 4, StatOverCompressed = 5,
             StatNeighbourOverflow = 6, StatMaxDensityRatio = 7, StatMaxSpeedSquared = 8, StatContacts = 9,
-            StatTotalKilled = 10, StatTotalExpired = 11, StatTotalInvalid = 12, StatCount = 13;
+            StatTotalKilled = 10, StatTotalExpired = 11, StatTotalInvalid = 12, StatMaxHeight = 13, StatMinHeightMirrored = 14, StatCount = 15;
+
+        /// <summary>
+        /// <see cref="FluidSolver.Depth"/> from the read-back stats of BeginStep (position-based; 0 when no particle was
+        /// measured): heights s ∈ [−L, L] along −g, L the domain's diagonal, kept as max(s + L) and max(L − s).
+        /// </summary>
+        public static float DepthOf(in FluidConstants c, ReadOnlySpan<uint> stats)
+        {
+            FluidParameters p = c.Parameters;
+            if (p.Solver != FluidSolverKind.PositionBased || stats.Length < StatCount)
+                return 0f;
+            float top = math.asfloat(stats[StatMaxHeight]), bottom = math.asfloat(stats[StatMinHeightMirrored]);
+            if (top == 0f && bottom == 0f)
+                return 0f;
+            float L = math.length(p.DomainMax - p.DomainMin);
+            float depth = top + bottom - 2f * L;
+            return math.isfinite(depth) && depth >= 0f ? depth + p.ParticleSpacing : 0f;
+        }
 
         /// <summary>float4s per collider or drain in <see cref="FluidComputeBuffer.Shapes"/> (SHAPE_FLOAT4S in FluidColliders.hlsl).</summary>
         public const int ShapeFloat4s = 5;

@@ -5,7 +5,8 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// One step of a particle fluid, the single-threaded reference that the jobs reproduce pass by pass
-    /// (<see cref="FluidPasses"/>). A step of dt runs n = ⌈dt / h_CFL⌉ substeps of h = dt / n. When n is above
+    /// (<see cref="FluidPasses"/>). A step of dt runs n = ⌈dt / h_max⌉ substeps of h = dt / n, h_max the CFL limit (and,
+    /// position-based, the depth limit <see cref="DepthSubstep"/>). When n is above
     /// <see cref="FluidParameters.MaxSubsteps"/> the step runs the cap's substeps of the same h and so simulates less than dt
     /// (slow motion, reported in <see cref="FluidStepReport.SimulatedTime"/>): stretching them to dt would break the CFL
     /// limit and compress the fluid many times over. Each substep:
@@ -36,10 +37,47 @@ namespace SoftBodyDynamics.Solvers
             return v > 0f ? lh / v : dt;
         }
 
-        /// <summary>Substeps for a step of <paramref name="dt"/> at fastest speed <paramref name="maxSpeed"/>: (wanted, used).</summary>
-        public static int2 Substeps(in FluidConstants c, float maxSpeed, float dt)
+        /// <summary>
+        /// Position-based: the density error a column of <paramref name="depth"/> metres settles to with substeps of
+        /// <paramref name="substep"/> seconds, ε ≈ <see cref="PositionBasedDepthErrorFactor"/>·g·h²·D / (Δx²·iterations):
+        /// each substep gravity presses the column by g·h², and the Jacobi iterations lift it back only a few layers per
+        /// iteration, so the error grows with the number of layers D/Δx over the iterations (measured on 10- to 40-layer
+        /// columns at Δx = 2 cm, h = 2Δx, 2 to 32 iterations·substeps; docs: fluids.md).
+        /// </summary>
+        public static float PositionBasedDepthError(in FluidConstants c, float depth, float substep)
         {
-            float limit = CflSubstep(c, maxSpeed, dt);
+            FluidParameters p = c.Parameters;
+            float dx = p.ParticleSpacing;
+            return PositionBasedDepthErrorFactor * math.length(p.Gravity) * substep * substep * depth / (dx * dx * p.PressureIterations);
+        }
+
+        /// <summary>Constant of <see cref="PositionBasedDepthError"/> (dimensionless, fitted: 0.22–0.24 over the measured columns).</summary>
+        public const float PositionBasedDepthErrorFactor = 0.23f;
+
+        /// <summary>Position-based: the density error the depth rule of <see cref="Substeps"/> allows (1 %).</summary>
+        public const float PositionBasedDepthTolerance = 0.01f;
+
+        /// <summary>
+        /// Position-based: the longest substep (s) that keeps <see cref="PositionBasedDepthError"/> of a column
+        /// <paramref name="depth"/> metres deep within <see cref="PositionBasedDepthTolerance"/>; infinity without depth or gravity.
+        /// </summary>
+        public static float DepthSubstep(in FluidConstants c, float depth)
+        {
+            FluidParameters p = c.Parameters;
+            float g = math.length(p.Gravity);
+            if (p.Solver != FluidSolverKind.PositionBased || !(depth > 0f) || !(g > 0f))
+                return float.PositiveInfinity;
+            float dx = p.ParticleSpacing;
+            return dx * math.sqrt(PositionBasedDepthTolerance * p.PressureIterations / (PositionBasedDepthErrorFactor * g * depth));
+        }
+
+        /// <summary>
+        /// Substeps for a step of <paramref name="dt"/> at fastest speed <paramref name="maxSpeed"/> (m/s) of a fluid
+        /// <paramref name="depth"/> metres deep along gravity (position-based only: <see cref="DepthSubstep"/>): (wanted, used).
+        /// </summary>
+        public static int2 Substeps(in FluidConstants c, float maxSpeed, float depth, float dt)
+        {
+            float limit = math.min(CflSubstep(c, maxSpeed, dt), DepthSubstep(c, depth));
             float ratio = dt / limit;
             int wanted = ratio < FluidParameters.SubstepLimit * 4f ? math.max(1, (int)math.ceil(ratio)) : FluidParameters.SubstepLimit * 4;
             return new int2(wanted, math.min(wanted, c.Parameters.MaxSubsteps));
@@ -92,10 +130,34 @@ namespace SoftBodyDynamics.Solvers
                     maxSpeed = v2;
             }
             maxSpeed = math.min(math.sqrt(maxSpeed), c.Parameters.MaxSpeed);
-            Plan plan = PlanOf(dt, Substeps(c, maxSpeed, dt));
+            Plan plan = PlanOf(dt, Substeps(c, maxSpeed, Depth(c, p.Positions.Slice(0, count)), dt));
             for (int i = 0; i < count; i++)
                 p.Ages[i] += plan.SimulatedTime;
             return plan;
+        }
+
+        /// <summary>
+        /// Position-based: the depth the substep rule plans for (m), the extent of the particles along gravity plus one
+        /// spacing (a splash above the pool counts as depth: the rule errs toward more substeps). 0 for the weakly
+        /// compressible solver, whose substep does not depend on it; non-finite positions are skipped.
+        /// </summary>
+        public static float Depth(in FluidConstants c, ReadOnlySpan<float3> positions)
+        {
+            FluidParameters p = c.Parameters;
+            float g = math.length(p.Gravity);
+            if (p.Solver != FluidSolverKind.PositionBased || positions.Length == 0 || !(g > 0f))
+                return 0f;
+            float3 up = -p.Gravity / g;
+            float lo = float.PositiveInfinity, hi = float.NegativeInfinity;
+            for (int i = 0; i < positions.Length; i++)
+            {
+                float y = math.dot(positions[i] - p.DomainMin, up);
+                if (!math.isfinite(y))
+                    continue;
+                lo = math.min(lo, y);
+                hi = math.max(hi, y);
+            }
+            return hi >= lo ? hi - lo + p.ParticleSpacing : 0f;
         }
 
         /// <summary>Closes a step: the live count, time and removal totals into the status, the counters into the report.</summary>

@@ -118,8 +118,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             var (kinetic, top, densityError, count) = SettledColumn(solver, 4);
             TestContext.WriteLine($"{solver}: kinetic {kinetic:E2} J/kg, top {top:F4} m, density error {densityError:P2}");
             Assert.AreEqual(250, count);
-            // At rest: kinetic energy per mass ≪ g·Δx = 0.2 J/kg (a particle bouncing one spacing high).
-            Assert.That(kinetic, Is.LessThan(0.01 * 9.81 * 0.02));
+            // At rest: kinetic energy per mass ≪ g·Δx = 0.2 J/kg (a particle bouncing one spacing high). Position-based
+            // surface particles keep jittering (the residual of 4 Jacobi iterations becomes a velocity Δx/h, and the depth
+            // rule's two substeps per frame halve h): its bound is twice the weakly compressible one.
+            double bound = solver == FluidSolverKind.WeaklyCompressible ? 0.01 : 0.02;
+            Assert.That(kinetic, Is.LessThan(bound * 9.81 * 0.02));
             Assert.That(top, Is.LessThan(0.2f + 0.02f), "the surface stays where it was, within a spacing");
             // Weakly compressible with c₀ = 10·√(2gH) = 19.8 m/s: the Tait law holds the floor at
             // ρ/ρ₀ ≈ 1 + gH/c₀² = 1.005, so the mean bulk density error is below 1 %.
@@ -148,6 +151,50 @@ namespace SoftBodyDynamics.Tests.Solvers
             ke /= b.Status.Count;
             TestContext.WriteLine($"kinetic energy after 3 s: {ke:E2} J/kg");
             Assert.That(ke, Is.LessThan(1e-5));
+        }
+
+        [Test]
+        public void PositionBasedDefaults_HoldAFortyLayerColumn()
+        {
+            // 0.12 × 0.8 × 0.12 m at Δx = 2 cm (40 layers, 1440 particles), 4 iterations, 1/60 s frames. One substep per
+            // frame lets gravity press the column by g·h² = 2.7 mm a substep while 4 Jacobi iterations lift only the
+            // bottom layers: the column collapses and splashes to the lid. The depth rule plans the substeps for the
+            // column's height so that the density error ε ≈ 0.23·g·h²·D/(Δx²·iterations) stays near 1 %.
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.12f, 1.2f, 0.12f));
+            p.Solver = FluidSolverKind.PositionBased;
+            Assert.That(p.PressureIterations, Is.EqualTo(FluidParameters.Default.PressureIterations));
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 1440, float3.zero, new float3(0.12f, 0.8f, 0.12f));
+            Assert.AreEqual(1440, b.Status.Count);
+            double highestKinetic = 0;
+            float top = 0f;
+            for (int f = 0; f < 120; f++)
+            {
+                FluidTestScenes.Step(c, b, 1f / 60f);
+                double ke = 0;
+                for (int i = 0; i < b.Status.Count; i++)
+                {
+                    ke += 0.5 * math.lengthsq(b.Velocities[i]);
+                    top = math.max(top, b.Positions[i].y);
+                }
+                highestKinetic = math.max(highestKinetic, ke / b.Status.Count);
+            }
+            double density = 0;
+            int bulk = 0;
+            for (int i = 0; i < b.Status.Count; i++)
+                if (b.NeighbourCounts[i] >= 15)
+                {
+                    density += Math.Abs(b.Densities[i] / 1000.0 - 1.0);
+                    bulk++;
+                }
+            density /= bulk;
+            TestContext.WriteLine($"highest kinetic energy {highestKinetic:E2} J/kg, top {top:F3} m, bulk density error {density:P2}");
+            Assert.AreEqual(1440, b.Status.Count);
+            // No collapse: less kinetic energy than a 1 cm free fall (g·0.01 m ≈ 0.1 J/kg; the collapse reaches 4–11 J/kg),
+            // and no particle more than five layers above the start (the surface jitters by one or two; the splash reaches the lid).
+            Assert.That(highestKinetic, Is.LessThan(0.1));
+            Assert.That(top, Is.LessThan(0.8f + 5 * 0.02f));
+            Assert.That(density, Is.LessThan(0.02));
         }
 
         [Test]
@@ -239,7 +286,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 500, float3.zero, new float3(0.2f, 0.1f, 0.2f));
-            int atRest = FluidSolver.Substeps(c, 0f, 1f / 60f).y;
+            int atRest = FluidSolver.Substeps(c, 0f, 0f, 1f / 60f).y;
             b.Velocities[3] = new float3(float.PositiveInfinity, 0f, 0f);
             FluidStepReport r = FluidTestScenes.Step(c, b, 1f / 60f);
             Assert.AreEqual(1, r.Invalid);

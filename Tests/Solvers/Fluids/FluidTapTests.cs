@@ -277,5 +277,22 @@ namespace SoftBodyDynamics.Tests.Solvers
             codes = issues.ConvertAll(i => i.Code);
             CollectionAssert.IsSupersetOf(codes, new[] { SoftBodyIssueCode.FluidSpacingInvalid, SoftBodyIssueCode.FluidSpeedOfSoundInvalid, SoftBodyIssueCode.FluidBudgetInvalid });
         }
+
+        [Test]
+        public void PositionBasedDomainTooDeepForTheCap_IsAWarning()
+        {
+            // The depth rule for a full default domain (1 m) at 4 iterations asks for h ≤ Δx·√(0.01·4 / (0.23·g·1 m)) ≈ 2.7 ms,
+            // 7 substeps per 1/60 s frame: a cap of 4 warns, the default cap of 32 does not.
+            FluidParameters p = FluidParameters.Default;
+            p.Solver = FluidSolverKind.PositionBased;
+            var issues = new List<SoftBodyIssue>();
+            Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
+            Assert.IsEmpty(issues);
+            p.MaxSubsteps = 4;
+            Assert.IsTrue(FluidValidation.Validate(p, 1000, issues), "a warning, not an error");
+            Assert.AreEqual(1, issues.Count);
+            Assert.AreEqual(SoftBodyIssueCode.FluidSubstepCapTooLow, issues[0].Code);
+            StringAssert.Contains("7 substeps", issues[0].Message);
+        }
     }
 }

@@ -138,6 +138,30 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         /// <summary>
+        /// Position-based, a deep column at rest (40 layers): the GPU measures its depth along gravity in BeginStep and plans the
+        /// depth rule's substeps as the CPU does (more than the one substep the CFL limit alone asks for at rest).
+        /// </summary>
+        [Test]
+        public void DeepPositionBasedColumn_GetsTheCpusDepthSubsteps()
+        {
+            FluidParameters p = FluidParameters.Default;
+            p.Solver = FluidSolverKind.PositionBased;
+            float3 domain = new float3(0.12f, 1.2f, 0.12f), column = new float3(0.12f, 0.8f, 0.12f);
+            FluidBuffers cpu = FluidScene.BlockInBox(p, 0.02f, domain, column, out FluidConstants c);
+            FluidBuffers start = FluidScene.BlockInBox(p, 0.02f, domain, column, out _);
+            float depth = FluidSolver.Depth(c, cpu.Positions.AsSpan(0, cpu.Status.Count));
+            Assert.That(depth, Is.EqualTo(0.8f).Within(1e-5f), "the column's extent plus one spacing");
+            Assert.That(FluidSolver.Substeps(c, 0f, 0f, 1f / 60f).x, Is.EqualTo(1), "the CFL limit alone");
+            FluidStepReport expected = FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, cpu.Particles, cpu.Scratch, ref cpu.Status);
+            Assert.That(expected.Substeps, Is.GreaterThan(1));
+            using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, start.Capacity);
+            g.Upload(start.Particles, start.Status.Count);
+            FluidStepReport r = g.Step(1f / 60f, ref start.Status);
+            Lavapipe.AssertValid();
+            Assert.That(r.Substeps, Is.EqualTo(expected.Substeps));
+        }
+
+        /// <summary>
         /// A 1 s step of a resting block, capped: the GPU plans it as the CPU does (the cap's substeps of the CFL length, so
         /// it simulates less than dt), ages every particle by the simulated time, and keeps the fluid below the
         /// over-compression bound.

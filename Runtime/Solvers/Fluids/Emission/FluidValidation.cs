@@ -39,9 +39,18 @@ namespace SoftBodyDynamics.Solvers
             if (!SoftBodyIssue.AnyError(issues, start))
             {
                 var c = new FluidConstants(p);
-                int2 substeps = FluidSolver.Substeps(c, 0f, 1f / 60f);
+                int2 substeps = FluidSolver.Substeps(c, 0f, 0f, 1f / 60f);
                 if (substeps.x > substeps.y)
                     issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSubstepCapTooLow, -1, $"At rest the CFL limit already asks for {substeps.x} substeps per 1/60 s frame, above the cap of {substeps.y}: lower the speed of sound or raise the substep cap."));
+                else if (c.Parameters.Solver == FluidSolverKind.PositionBased)
+                {
+                    // The depth rule for water filling the domain's height (the deepest the fluid can be).
+                    float3 g = c.Parameters.Gravity;
+                    float depth = math.lengthsq(g) > 0f ? math.abs(math.dot(c.Parameters.DomainMax - c.Parameters.DomainMin, math.normalize(g))) : 0f;
+                    int2 deep = FluidSolver.Substeps(c, 0f, depth, 1f / 60f);
+                    if (deep.x > deep.y)
+                        issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSubstepCapTooLow, -1, $"Fluid {depth:0.##} m deep (the domain's height) needs {deep.x} substeps per 1/60 s frame to keep its density error near 1 % with {c.Parameters.PressureIterations} iterations, above the cap of {deep.y}: deeper fluid will run in slow motion. Raise the iterations or the substep cap, or lower the domain."));
+                }
             }
             return !SoftBodyIssue.AnyError(issues, start);
         }
