@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                    $"free-slip walls, at a/{string.Join(", a/", Resolutions)}; hydrostatic column: 0.3 × 0.4 × 0.3 m at Δx = 2.5 cm; droplet: a 10 cm cube of 1000 particles; " +
                    "hard cases: 1000 particles in a 0.4 m box at Δx = 2 cm.",
             Material = $"Water. WCSPH: Tait γ = 7, artificial viscosity α = {FluidParameters.Default.ArtificialViscosity}, c₀ = {string.Join(", ", SoundMultiples)}·v, " +
-                       $"v = √(2g·2a) = {DamBreakScenario.ReferenceSpeed:0.00} m/s (column: 10·√(2gH); droplet: 5 m/s). PBF: {string.Join(", ", Iterations)} iterations " +
+                       $"v = √(2g·2a) = {DamBreakScenario.ReferenceSpeed:0.00} m/s (column: 10·√(2gH) and the default {FluidParameters.Default.SpeedOfSound:0} m/s; droplet: 5 m/s). PBF: {string.Join(", ", Iterations)} iterations " +
                        $"(column: {string.Join(", ", HydrostaticIterations)}). CFL {FluidParameters.Default.CflNumber}.",
             Load = $"Gravity. Dam break: released at rest, run to T = t√(2g/a) = {DamBreakScenario.EndT} in {1000 * DamBreakScenario.FrameSeconds} ms frames; " +
                    $"column: settled {SettleSeconds:0} s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion, " +
@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
                 $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, " +
-                $"the WCSPH column only (the position-based columns take 30 s of settling here), " +
+                $"the WCSPH columns only (the position-based columns take 30 s of settling here), " +
                 $"droplets without cohesion, with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
                 "Quick run: a/10 with one setting per solver, the WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
@@ -89,6 +89,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             float settle = quick ? 0.5f : SettleSeconds;
             yield return new HydrostaticColumnScenario(Weak(10f * HydrostaticColumnScenario.ReferenceSpeed), "c0 = 10·v", settle);
+            if (!quick)
+                yield return new HydrostaticColumnScenario(Weak(FluidParameters.Default.SpeedOfSound), "c0 = 10 m/s (default)", settle);
             if (scope == RunScope.Full)
                 foreach (int iterations in HydrostaticIterations)
                     yield return new HydrostaticColumnScenario(PositionBased(iterations), $"{iterations} it", settle);

@@ -119,8 +119,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             TestContext.WriteLine($"{solver}: kinetic {kinetic:E2} J/kg, top {top:F4} m, density error {densityError:P2}");
             Assert.AreEqual(250, count);
             // At rest: kinetic energy per mass ≪ g·Δx = 0.2 J/kg (a particle bouncing one spacing high). Position-based
-            // surface particles keep jittering (the residual of 4 Jacobi iterations becomes a velocity Δx/h, and the depth
-            // rule's two substeps per frame halve h): its bound is twice the weakly compressible one.
+            // surface particles keep jittering (the residual of 4 Jacobi iterations becomes a velocity of its size over h, and the depth
+            // rule's three substeps per frame cut h to a third): its bound is twice the weakly compressible one.
             double bound = solver == FluidSolverKind.WeaklyCompressible ? 0.01 : 0.02;
             Assert.That(kinetic, Is.LessThan(bound * 9.81 * 0.02));
             Assert.That(top, Is.LessThan(0.2f + 0.02f), "the surface stays where it was, within a spacing");
