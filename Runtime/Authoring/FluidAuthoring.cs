@@ -123,9 +123,12 @@ namespace SoftBodyDynamics.Authoring
         [Min(1)]
         public int readbackInterval = 10;
 
-        [Tooltip("Coulomb friction μ against colliders and the domain walls (0 = free slip; a particle resting on a wall slides with deceleration μg).")]
+        [Tooltip("Coulomb friction μ against colliders (0 = free slip, at most 1; a particle resting on a collider slides with deceleration μg).")]
         [Min(0f)]
         public float wallFriction;
+
+        [Tooltip("Coulomb friction μ of the domain box's faces normal to x, y and z (0 = free slip, at most 1). The floor is y: a particle resting on it slides with deceleration μ.y·g.")]
+        public Vector3 domainFriction;
 
         /// <summary>The solver settings these fields describe (the preset's material when one is chosen), in world space.</summary>
         public FluidParameters ToParameters()
@@ -157,6 +160,7 @@ namespace SoftBodyDynamics.Authoring
             p.CflNumber = cflNumber;
             p.MaxSubsteps = maxSubsteps;
             p.WallFriction = wallFriction;
+            p.DomainFriction = UnityMathConversions.ToFloat3(domainFriction);
             return p;
         }
 

@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Dam-break front thresholds (in column widths a, Z = x/a): the suite's tolerance, twice it and half it.</summary>
         public static readonly double[] FrontThresholds = { 2 * FluidAccuracySuite.FrontTolerance, FluidAccuracySuite.FrontTolerance, 0.5 * FluidAccuracySuite.FrontTolerance };
 
-        /// <summary>Simulated seconds of one dam-break run: T = 3.4 in Martin &amp; Moyce's time t·√(2g/a).</summary>
+        /// <summary>Simulated seconds of one dam-break run: T = <see cref="DamBreakScenario.EndT"/> in Martin &amp; Moyce's time t·√(2g/a).</summary>
         public static double DamBreakSeconds => DamBreakScenario.EndT / Math.Sqrt(2 * 9.81 / MartinMoyce1952.ColumnWidth);
 
         /// <summary>ms of compute per 1/60 s of simulated time of a dam-break row: the whole run's cost (every particle, every substep) over its simulated length.</summary>

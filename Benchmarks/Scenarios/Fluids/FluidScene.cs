@@ -64,6 +64,19 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return front + 0.5 * spacing;
         }
 
+        /// <summary>
+        /// Height (m) of the bulk at the wall x = 0: the largest y among particles with at least <paramref name="minNeighbours"/>
+        /// neighbours and x below <paramref name="band"/>, plus half a spacing; 0 when none is there.
+        /// </summary>
+        public static double BulkHeightAtWall(FluidBuffers b, float spacing, int minNeighbours, float band)
+        {
+            double top = double.NegativeInfinity;
+            for (int i = 0; i < b.Status.Count; i++)
+                if (b.NeighbourCounts[i] >= minNeighbours && b.Positions[i].x < band)
+                    top = Math.Max(top, b.Positions[i].y);
+            return double.IsNegativeInfinity(top) ? 0.0 : top + 0.5 * spacing;
+        }
+
         /// <summary>Mean |ρ/ρ₀ − 1| over particles with at least <paramref name="minNeighbours"/> neighbours (the last density pass).</summary>
         public static double MeanBulkDensityError(FluidBuffers b, float restDensity, int minNeighbours)
         {

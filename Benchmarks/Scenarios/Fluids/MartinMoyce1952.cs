@@ -20,6 +20,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Front position Z = x_front/a of each table point.</summary>
         public static readonly double[] Z = { 1.11, 1.22, 1.44, 1.67, 1.89, 2.11, 2.33, 2.56, 2.78, 3.00, 3.22, 3.44, 3.67, 3.89, 4.11 };
 
+        /// <summary>
+        /// Dimensionless time τ = t·√(g/a) of each residual-column point (Table 6, n² = 2, as transcribed in the same
+        /// Ocellaris script): T = τ·√2. The last three points (τ ≥ 4.2) come after the front reaches the end of a 6a tank.
+        /// </summary>
+        public static readonly double[] Tau = { 0.56, 0.77, 0.93, 1.08, 1.28, 1.46, 1.66, 1.84, 2.00, 2.21, 2.45, 2.70, 3.06, 3.44, 4.20, 5.25, 7.40 };
+
+        /// <summary>Residual column height H = η/(n²a) at the wall the column stood against, at each <see cref="Tau"/>.</summary>
+        public static readonly double[] Height = { 0.94, 0.89, 0.83, 0.78, 0.72, 0.67, 0.61, 0.56, 0.50, 0.44, 0.39, 0.33, 0.28, 0.22, 0.17, 0.11, 0.06 };
+
         /// <summary>T of a time t (s) with gravity g (m/s²).</summary>
         public static double DimensionlessTime(double t, double g = 9.81) => t * System.Math.Sqrt(2 * g / ColumnWidth);
     }

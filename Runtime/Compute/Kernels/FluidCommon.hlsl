@@ -73,7 +73,7 @@ uint4 _Flags;            // x weakly compressible, y flocking, z Akinci, w unuse
 uint4 _Counts;           // x capacity, y spawn count, z scan element count, w scan data offset
 uint4 _Scan;             // x index of the level's block totals in _ScanSums, yzw unused
 uint4 _ShapeCounts;      // x colliders, y drains (in _Shapes), zw unused
-float4 _Colliding;       // x wall friction μ, yzw unused
+float4 _Colliding;       // x collider friction μ, yzw the domain faces' μ per axis
 
 bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 

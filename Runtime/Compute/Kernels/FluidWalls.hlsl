@@ -63,7 +63,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
 }
 
 // FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,
-// with wall friction μ, cancels the motion along the faces since start by at most μ × the depth (and the velocity by that share).
+// with the faces' friction μ per axis, cancels the motion along them since start by at most Σ μ_axis × depth_axis (and the velocity by that share).
 void ClampToDomain(inout float3 x, inout float3 v, float3 start)
 {
     float3 lo = _DomainMin.xyz + _DomainMin.w;
@@ -77,13 +77,12 @@ void ClampToDomain(inout float3 x, inout float3 v, float3 start)
         else if (x[a] > hi[a]) v[a] = min(v[a], 0.0);
     }
     x = clamped;
-    float friction = _Colliding.x;
-    if (friction > 0.0)
+    float limit = dot(_Colliding.yzw, depth);
+    if (limit > 0.0)
     {
         float3 along = float3(depth.x > 0.0 ? 0.0 : 1.0, depth.y > 0.0 ? 0.0 : 1.0, depth.z > 0.0 ? 0.0 : 1.0);
         float3 tangential = (x - start) * along;
         float slide = length(tangential);
-        float limit = friction * (depth.x + depth.y + depth.z);
         if (slide > 0.0)
         {
             float cut = min(1.0, limit / slide);

@@ -40,7 +40,7 @@ namespace SoftBodyDynamics.Solvers
                     1f - math.exp(-p.AlignmentRate * h), dt, c.BulkPressureScale),
                 Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
                 ShapeCounts = new int4(colliders, drains, 0, 0),
-                Colliding = new float4(p.WallFriction, 0f, 0f, 0f),
+                Colliding = new float4(p.WallFriction, p.DomainFriction.x, p.DomainFriction.y, p.DomainFriction.z),
             };
         }
 

@@ -64,10 +64,11 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Keeps <paramref name="x"/> at least <see cref="FluidConstants.WallDistance"/> inside the domain box and
-        /// removes the velocity component into a face it touches. With <see cref="FluidParameters.WallFriction"/> μ the
-        /// faces are Coulomb walls like the colliders (<see cref="ContactProjection"/>): the motion along them since
-        /// <paramref name="start"/> is cancelled by at most μ × the depth pushed out, and the velocity along them by the same
-        /// share (a particle resting on the floor then slides with deceleration μg). Returns true when it moved the particle.
+        /// removes the velocity component into a face it touches. With <see cref="FluidParameters.DomainFriction"/> μ (per
+        /// axis) the faces are Coulomb walls like the colliders (<see cref="ContactProjection"/>): the motion along them since
+        /// <paramref name="start"/> is cancelled by at most Σ μ_axis × the depth pushed out along that axis, and the velocity
+        /// along them by the same share (a particle resting on the floor then slides with deceleration μ.y·g). Returns true
+        /// when it moved the particle.
         /// </summary>
         public static bool ClampToDomain(in FluidConstants c, ref float3 x, ref float3 v, float3 start)
         {
@@ -82,13 +83,12 @@ namespace SoftBodyDynamics.Solvers
             if (x.y < lo.y) v.y = math.max(v.y, 0f); else if (x.y > hi.y) v.y = math.min(v.y, 0f);
             if (x.z < lo.z) v.z = math.max(v.z, 0f); else if (x.z > hi.z) v.z = math.min(v.z, 0f);
             x = clamped;
-            float friction = c.Parameters.WallFriction;
-            if (friction > 0f)
+            float limit = math.dot(c.Parameters.DomainFriction, depth);
+            if (limit > 0f)
             {
                 var along = new float3(depth.x > 0f ? 0f : 1f, depth.y > 0f ? 0f : 1f, depth.z > 0f ? 0f : 1f);
                 float3 tangential = (x - start) * along;
                 float slide = math.length(tangential);
-                float limit = friction * (depth.x + depth.y + depth.z);
                 if (slide > 0f)
                 {
                     float cut = math.min(1f, limit / slide);

@@ -62,8 +62,14 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainMin;
         /// <summary>Upper corner of the domain box (m, world).</summary>
         public float3 DomainMax;
-        /// <summary>Coulomb friction coefficient μ at the colliders and the domain walls (0 = free slip): a contact cancels tangential motion up to μ × its depth (a particle resting on a wall slides with deceleration μg).</summary>
+        /// <summary>Coulomb friction coefficient μ at the colliders (0 = free slip, at most 1): a contact cancels tangential motion up to μ × its depth (a particle resting on a collider slides with deceleration μg).</summary>
         public float WallFriction;
+        /// <summary>
+        /// Coulomb μ of the domain box's faces normal to x, y and z (0 = free slip, at most 1), the colliders' rule: a
+        /// particle resting on the floor slides with deceleration μ.y·g. Per axis, so a slab between two faces can keep them
+        /// free-slip (symmetry planes) while its floor grips. Default 0.
+        /// </summary>
+        public float3 DomainFriction;
         /// <summary>CFL number λ of the adaptive substep: h·λ / (c₀ + v_max) (weakly compressible) or h·λ / v_max (position-based). Default 0.4.</summary>
         public float CflNumber;
         /// <summary>Most substeps per step (1–256). When the CFL limit asks for more, the step reports it and runs this many. Default 32.</summary>
@@ -107,11 +113,15 @@ namespace SoftBodyDynamics.Solvers
             DomainMin = new float3(-0.5f, 0f, -0.5f),
             DomainMax = new float3(0.5f, 1f, 0.5f),
             WallFriction = 0f,
+            DomainFriction = float3.zero,
             CflNumber = 0.4f,
             MaxSubsteps = 32,
             MaxSpeed = 50f,
             MaxDensityRatio = 1.5f,
         };
+
+        /// <summary>A Coulomb coefficient in [0, 1]; NaN is free slip.</summary>
+        static float Friction(float mu) => math.isnan(mu) ? 0f : math.saturate(mu);
 
         /// <summary>A copy the step can trust: NaN or out-of-range values replaced by the nearest valid value (or the default).</summary>
         public FluidParameters Sanitized()
@@ -141,7 +151,8 @@ namespace SoftBodyDynamics.Solvers
                 p.DomainMin = d.DomainMin;
                 p.DomainMax = d.DomainMax;
             }
-            p.WallFriction = math.isnan(WallFriction) ? 0f : math.saturate(WallFriction);
+            p.WallFriction = Friction(WallFriction);
+            p.DomainFriction = new float3(Friction(DomainFriction.x), Friction(DomainFriction.y), Friction(DomainFriction.z));
             p.CflNumber = math.isfinite(CflNumber) ? math.clamp(CflNumber, 0.05f, 1f) : d.CflNumber;
             p.MaxSubsteps = math.clamp(MaxSubsteps, 1, SubstepLimit);
             p.MaxSpeed = Finite.Positive(MaxSpeed, d.MaxSpeed);

@@ -329,17 +329,21 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// <summary>
         /// One particle resting on the domain floor, sliding at 1 m/s. Each substep gravity carries it g·h² into the floor
         /// and the clamp cancels up to μ × that depth of its sliding, so its speed falls by μ·g·h per substep: Coulomb
-        /// friction, v(t) = v₀ − μgt until it stops (within one substep's μgh). Free slip (μ = 0) keeps v₀.
+        /// friction, v(t) = v₀ − μgt until it stops (within one substep's μgh). Free slip (μ = 0) keeps v₀; so does a floor
+        /// whose own μ.y is 0 while the faces normal to x and z grip (the friction is per axis), and collider friction.
         /// </summary>
-        [TestCase(FluidSolverKind.WeaklyCompressible, 0f)]
-        [TestCase(FluidSolverKind.WeaklyCompressible, 0.5f)]
-        [TestCase(FluidSolverKind.PositionBased, 0f)]
-        [TestCase(FluidSolverKind.PositionBased, 0.5f)]
-        public void DomainFloor_SlowsASlidingParticleAtMuG(FluidSolverKind solver, float mu)
+        [TestCase(FluidSolverKind.WeaklyCompressible, 0f, 0f)]
+        [TestCase(FluidSolverKind.WeaklyCompressible, 0.5f, 0f)]
+        [TestCase(FluidSolverKind.WeaklyCompressible, 0f, 0.5f)]
+        [TestCase(FluidSolverKind.PositionBased, 0f, 0f)]
+        [TestCase(FluidSolverKind.PositionBased, 0.5f, 0f)]
+        [TestCase(FluidSolverKind.PositionBased, 0f, 0.5f)]
+        public void DomainFloor_SlowsASlidingParticleAtMuG(FluidSolverKind solver, float mu, float otherFaces)
         {
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(2f, 0.4f, 0.4f));
             p.Solver = solver;
-            p.WallFriction = mu;
+            p.DomainFriction = new float3(otherFaces, mu, otherFaces);
+            p.WallFriction = otherFaces;
             var c = new FluidConstants(p);
             var b = new FluidBuffers(1, c.Grid);
             b.Positions[0] = new float3(0.2f, c.WallDistance, 0.2f);

@@ -44,6 +44,25 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void HeightAtWall_IsTheTopOfTheBulkNearTheWallPlusHalfASpacing()
+        {
+            // A column x ∈ {0.01, 0.03}, y up to 0.19 (tops at 0.19) and a taller particle farther out (x = 0.2, y = 0.5): only
+            // the band x < 0.05 counts, and only particles with enough neighbours.
+            var points = new List<float3>();
+            for (int x = 0; x < 2; x++)
+            for (int y = 0; y < 10; y++)
+                points.Add(new float3(0.01f + 0.02f * x, 0.01f + 0.02f * y, 0f));
+            points.Add(new float3(0.2f, 0.5f, 0f));
+            points.Add(new float3(0.01f, 0.6f, 0f));
+            FluidBuffers b = Points(points);
+            for (int i = 0; i < b.Status.Count; i++)
+                b.NeighbourCounts[i] = i < 21 ? 8 : 0;
+            Assert.That(FluidScene.BulkHeightAtWall(b, 0.02f, 4, 0.05f), Is.EqualTo(0.19 + 0.01).Within(1e-6));
+            // The table's first 14 points (τ ≤ 3.44, T = τ√2 ≤ 4.87) fall inside a run to T = 4.9; τ = 4.2 does not.
+            Assert.AreEqual(14, DamBreakScenario.HeightPoints);
+        }
+
+        [Test]
         public void FrontSpeed_OfTheTableIsItsLateSlope()
         {
             // The stability plan quotes a late slope of 1.38 for Table 2; the least-squares fit over 2 ≤ T ≤ 3.33

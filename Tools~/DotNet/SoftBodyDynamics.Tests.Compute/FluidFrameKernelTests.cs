@@ -33,6 +33,7 @@ namespace SoftBodyDynamics.Tests.Compute
             p.DomainMax = new float3(0.2f, 0.5f, 0.2f);
             p.Gravity = new float3(0f, -9.81f, 0f);
             p.WallFriction = 0.2f;
+            p.DomainFriction = new float3(0.2f);
             return new FluidConstants(p);
         }
 

@@ -46,6 +46,7 @@ namespace SoftBodyDynamics.Tests.Compute
                 case "PBF colliders":
                     p.Solver = setting.StartsWith("PBF") ? FluidSolverKind.PositionBased : FluidSolverKind.WeaklyCompressible;
                     p.WallFriction = 0.3f;
+                    p.DomainFriction = new float3(0.1f, 0.3f, 0.2f);
                     break;
                 case "PBF Akinci viscosity":
                     p.Solver = FluidSolverKind.PositionBased;
