@@ -62,7 +62,7 @@ float4 _GridOrigin;      // xyz grid origin (m), w 1 / cell size (1/m)
 uint4 _GridDims;         // xyz cells along each axis, w cell count (= the dead key)
 float4 _DomainMin;       // xyz (m), w wall distance (m)
 float4 _DomainMax;       // xyz (m), w wall scale κ
-float4 _Gravity;         // xyz (m/s²)
+float4 _Gravity;         // xyz (m/s²), w position-based artificial pressure scale k·λ₁ (m²)
 float4 _Kernel;          // h (m), h² (m²), poly6 coefficient, spiky gradient coefficient
 float4 _Kernel2;         // cohesion coefficient, cohesion offset, viscosity Laplacian coefficient, gradient correction κ∇
 float4 _Material;        // particle mass (kg), ρ₀ (kg/m³), Tait stiffness B (Pa), max density ratio

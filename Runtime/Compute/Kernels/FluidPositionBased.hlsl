@@ -39,13 +39,18 @@ void Lambda(uint3 id : SV_DispatchThreadID)
     _Pressures[i] = -constraint / (sumSq + dot(gradI, gradI) + _Motion.w);
 }
 
-// Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eq. 12) into _VectorsA.
+// (h² − Δq²)/h² of the artificial pressure's reference distance Δq = 0.2h (FluidPasses.ArtificialPressureQ).
+#define ARTIFICIAL_PRESSURE_Q 0.96
+
+// Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ + s_corr)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eqs. 12–14) into _VectorsA, s_corr = −k·λ₁·(W(r)/W(Δq))⁴
+// with k·λ₁ in _Gravity.w (FluidConstants.ArtificialPressureScale).
 [numthreads(FLUID_GROUP, 1, 1)]
 void Correction(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
     float mOverRho0 = _Material.x / _Material.y;
+    float artificial = _Gravity.w, h2 = _Kernel.y, inverseQ = 1.0 / (ARTIFICIAL_PRESSURE_Q * _Kernel.y);
     float3 xi = _Positions[i].xyz;
     float li = _Pressures[i];
     float3 dx = float3(0.0, 0.0, 0.0);
@@ -54,9 +59,16 @@ void Correction(uint3 id : SV_DispatchThreadID)
     for (uint n = 0; n < count; n++)
     {
         uint j = _Neighbours[list + n];
-        float lij = li + _Pressures[j];
-        if (lij == 0.0) continue;
         float3 rij = xi - _Positions[j].xyz;
+        float lij = li + _Pressures[j];
+        if (artificial > 0.0)
+        {
+            // (W(r)/W(Δq))⁴ = ((h² − r²)/(h² − Δq²))¹²
+            float t = max(h2 - dot(rij, rij), 0.0) * inverseQ;
+            float t3 = t * t * t, t6 = t3 * t3;
+            lij -= artificial * (t6 * t6);
+        }
+        if (lij == 0.0) continue;
         float r = length(rij);
         if (r > 1e-6 * _Kernel.x) dx += lij * SpikyGradientScale(r) * rij;
         else dx += lij * _Kernel.w * _Kernel.y * CoincidentDirection(idI, (int)_Extras[j].y);

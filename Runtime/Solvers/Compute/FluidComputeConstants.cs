@@ -29,7 +29,7 @@ namespace SoftBodyDynamics.Solvers
                 GridDims = new int4(g.Dimensions.x, g.Dimensions.y, g.Dimensions.z, g.CellCount),
                 DomainMin = new float4(p.DomainMin, c.WallDistance),
                 DomainMax = new float4(p.DomainMax, c.WallScale),
-                Gravity = new float4(p.Gravity, 0f),
+                Gravity = new float4(p.Gravity, c.ArtificialPressureScale),
                 Kernel = new float4(k.H, k.H2, k.Poly6Coefficient, k.SpikyGradientCoefficient),
                 Kernel2 = new float4(k.CohesionCoefficient, k.CohesionOffset, k.ViscosityLaplacianCoefficient, c.GradientCorrection),
                 Material = new float4(c.Mass, p.RestDensity, c.TaitStiffness, p.MaxDensityRatio),

@@ -37,6 +37,11 @@ namespace SoftBodyDynamics.Solvers
         /// so the scale is ρ₀ζ·6C·κ₆·m with ζ = <see cref="FluidParameters.BulkViscosity"/>·c₀·h. 0 = off.
         /// </summary>
         public readonly float BulkPressureScale;
+        /// <summary>
+        /// Position-based: k·λ₁ (m²), the artificial pressure's scale: k = <see cref="FluidParameters.ArtificialPressure"/> and
+        /// λ₁ = 1/Σ|∇Cₖ|² over a rest lattice, the λ of a unit density error, so k reads as a density error (0.1: 10 % at r = Δq).
+        /// </summary>
+        public readonly float ArtificialPressureScale;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -55,6 +60,10 @@ namespace SoftBodyDynamics.Solvers
             float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset, false));
             BulkPressureScale = Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h
                 * 6f * Kernels.Poly6Coefficient * poly6Correction * Mass;
+            float gradientSquares = (Mass / Parameters.RestDensity) * (Mass / Parameters.RestDensity)
+                * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.GradientSquared, false);
+            ArtificialPressureScale = Parameters.Solver == FluidSolverKind.PositionBased && gradientSquares > 0f
+                ? Parameters.ArtificialPressure / gradientSquares : 0f;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
         }
 
@@ -71,7 +80,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
         public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, false);
 
-        enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset }
+        enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset, GradientSquared }
 
         /// <summary>A kernel term summed in double over the cubic lattice around a particle (only the layers k.z ≥ 1 when <paramref name="beyondWall"/>).</summary>
         static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall)
@@ -88,6 +97,8 @@ namespace SoftBodyDynamics.Solvers
                 {
                     LatticeTerm.Poly6 => kernels.Poly6(r2),
                     LatticeTerm.GradientDotOffset => (double)kernels.SpikyGradientScale(math.sqrt(r2)) * r2,
+                    // |∇W|² = (SpikyGradientScale(r)·r)².
+                    LatticeTerm.GradientSquared => (double)kernels.SpikyGradientScale(math.sqrt(r2)) * kernels.SpikyGradientScale(math.sqrt(r2)) * r2,
                     // r·∇W_poly6 = −6C(h² − r²)²·r².
                     _ => -6.0 * kernels.Poly6Coefficient * q * q * r2,
                 };

@@ -36,6 +36,14 @@ namespace SoftBodyDynamics.Solvers
         /// <see cref="CflNumber"/> already leaves acoustic noise (measured on a 0.4 m column). 0–1, default 0.5 (0 = off).
         /// </summary>
         public float BulkViscosity;
+        /// <summary>
+        /// Position-based: artificial pressure k (dimensionless; Macklin &amp; Müller 2013, eqs. 13–14): a short-range
+        /// repulsion s_corr = −k·λ₁·(W(r)/W(0.2h))⁴, λ₁ the constraint's λ for a unit density error, so k reads as a
+        /// density error. It holds the free surface, where the clamped constraint is inactive and 4 Jacobi iterations left
+        /// the top layers of a deep column jittering (a 40-layer column kept 7·10⁻³ J/kg after 3 s without it, 2·10⁻⁶ with
+        /// 0.1). 0–0.5, default 0.1 (0 = off).
+        /// </summary>
+        public float ArtificialPressure;
         /// <summary>Position-based: density-constraint iterations per substep (1–100). Default 4.</summary>
         public int PressureIterations;
         /// <summary>Kinematic viscosity ν (m²/s): water 1e-6, oil 1e-4, honey 5e-3. Integrated implicitly, so any value is stable.</summary>
@@ -101,6 +109,7 @@ namespace SoftBodyDynamics.Solvers
             SpeedOfSound = 10f,
             ArtificialViscosity = 0.05f,
             BulkViscosity = 0.5f,
+            ArtificialPressure = 0.1f,
             PressureIterations = 4,
             Viscosity = 1e-6f,
             ViscosityIterations = 4,
@@ -138,6 +147,7 @@ namespace SoftBodyDynamics.Solvers
             p.SpeedOfSound = Finite.Positive(SpeedOfSound, d.SpeedOfSound);
             p.ArtificialViscosity = math.isfinite(ArtificialViscosity) ? math.clamp(ArtificialViscosity, 0f, 1f) : d.ArtificialViscosity;
             p.BulkViscosity = math.isfinite(BulkViscosity) ? math.clamp(BulkViscosity, 0f, 1f) : d.BulkViscosity;
+            p.ArtificialPressure = math.isfinite(ArtificialPressure) ? math.clamp(ArtificialPressure, 0f, 0.5f) : d.ArtificialPressure;
             p.PressureIterations = math.clamp(PressureIterations, 1, MaxPressureIterations);
             p.Viscosity = Finite.NonNegative(Viscosity);
             p.ViscosityIterations = math.clamp(ViscosityIterations, 0, MaxViscosityIterations);

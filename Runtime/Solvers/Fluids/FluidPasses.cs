@@ -496,11 +496,16 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
-        /// <summary>Position-based: Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eq. 12) into <see cref="FluidScratch.VectorsA"/>.</summary>
+        /// <summary>
+        /// Position-based: Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ + s_corr)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eqs. 12–14) into
+        /// <see cref="FluidScratch.VectorsA"/>, with the artificial pressure s_corr = −k·λ₁·(W(r)/W(Δq))⁴, Δq = 0.2h
+        /// (<see cref="FluidConstants.ArtificialPressureScale"/>).
+        /// </summary>
         public static void Correction(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int start, int end)
         {
             SphKernels k = c.Kernels;
             float mOverRho0 = c.Mass / c.Parameters.RestDensity;
+            float artificial = c.ArtificialPressureScale, h2 = k.H2, inverseQ = 1f / (ArtificialPressureQ * k.H2);
             const int cap = FluidScratch.MaxNeighbours;
             for (int i = start; i < end; i++)
             {
@@ -511,10 +516,17 @@ namespace SoftBodyDynamics.Solvers
                 for (int n = 0; n < count; n++)
                 {
                     int j = s.Neighbours[i * cap + n];
+                    float3 rij = xi - p.Positions[j];
                     float lij = li + s.Pressures[j];
+                    if (artificial > 0f)
+                    {
+                        // (W(r)/W(Δq))⁴ = ((h² − r²)/(h² − Δq²))¹²
+                        float t = math.max(h2 - math.lengthsq(rij), 0f) * inverseQ;
+                        float t3 = t * t * t, t6 = t3 * t3;
+                        lij -= artificial * (t6 * t6);
+                    }
                     if (lij == 0f)
                         continue;
-                    float3 rij = xi - p.Positions[j];
                     float r = math.length(rij);
                     if (r > 1e-6f * k.H)
                         dx += lij * k.SpikyGradientScale(r) * rij;
@@ -530,6 +542,9 @@ namespace SoftBodyDynamics.Solvers
                 s.VectorsA[i] = dx;
             }
         }
+
+        /// <summary>h² − Δq² over h² for the artificial pressure's reference distance Δq = 0.2h (Macklin &amp; Müller 2013 use 0.1h–0.3h).</summary>
+        public const float ArtificialPressureQ = 0.96f;
 
         /// <summary>Position-based: xᵢ += Δxᵢ, kept in the domain box.</summary>
         public static void ApplyCorrection(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end)

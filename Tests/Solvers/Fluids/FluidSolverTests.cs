@@ -85,11 +85,14 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         /// <summary>0.1 × 0.2 × 0.1 m of water at Δx = 2 cm settled for 2 s: (kinetic energy per mass, top, mean bulk density error).</summary>
-        static (double kinetic, float top, double densityError, int count) SettledColumn(FluidSolverKind solver, int iterations)
+        static (double kinetic, float top, double densityError, int count) SettledColumn(FluidSolverKind solver, int iterations,
+            float artificialPressure = -1f)
         {
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.1f, 0.4f, 0.1f));
             p.Solver = solver;
             p.PressureIterations = iterations;
+            if (artificialPressure >= 0f)
+                p.ArtificialPressure = artificialPressure;
             p.SpeedOfSound = 10f * math.sqrt(2f * 9.81f * 0.2f);
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 250, float3.zero, new float3(0.1f, 0.2f, 0.1f));
@@ -118,11 +121,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var (kinetic, top, densityError, count) = SettledColumn(solver, 4);
             TestContext.WriteLine($"{solver}: kinetic {kinetic:E2} J/kg, top {top:F4} m, density error {densityError:P2}");
             Assert.AreEqual(250, count);
-            // At rest: kinetic energy per mass ≪ g·Δx = 0.2 J/kg (a particle bouncing one spacing high). Position-based
-            // surface particles keep jittering (the residual of 4 Jacobi iterations becomes a velocity of its size over h, and the depth
-            // rule's three substeps per frame cut h to a third): its bound is twice the weakly compressible one.
-            double bound = solver == FluidSolverKind.WeaklyCompressible ? 0.01 : 0.02;
-            Assert.That(kinetic, Is.LessThan(bound * 9.81 * 0.02));
+            // At rest: kinetic energy per mass ≪ g·Δx = 0.2 J/kg (a particle bouncing one spacing high).
+            Assert.That(kinetic, Is.LessThan(0.01 * 9.81 * 0.02));
             Assert.That(top, Is.LessThan(0.2f + 0.02f), "the surface stays where it was, within a spacing");
             // Weakly compressible with c₀ = 10·√(2gH) = 19.8 m/s: the Tait law holds the floor at
             // ρ/ρ₀ ≈ 1 + gH/c₀² = 1.005, so the mean bulk density error is below 1 %.
@@ -159,16 +159,18 @@ namespace SoftBodyDynamics.Tests.Solvers
             // 0.12 × 0.8 × 0.12 m at Δx = 2 cm (40 layers, 1440 particles), 4 iterations, 1/60 s frames. One substep per
             // frame lets gravity press the column by g·h² = 2.7 mm a substep while 4 Jacobi iterations lift only the
             // bottom layers: the column collapses and splashes to the lid. The depth rule plans the substeps for the
-            // column's height so that the density error ε ≈ 0.23·g·h²·D/(Δx²·iterations) stays near 1 %.
+            // column's height so that the density error ε ≈ 0.23·g·h²·D/(Δx²·iterations) stays near 1 %, and the
+            // artificial pressure holds the surface, where the clamped constraint is inactive: after 3 s the column is at
+            // rest to 1e-5 J/kg (0.4 mm/s RMS; it jittered at 7e-3 J/kg without it).
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.12f, 1.2f, 0.12f));
             p.Solver = FluidSolverKind.PositionBased;
             Assert.That(p.PressureIterations, Is.EqualTo(FluidParameters.Default.PressureIterations));
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 1440, float3.zero, new float3(0.12f, 0.8f, 0.12f));
             Assert.AreEqual(1440, b.Status.Count);
-            double highestKinetic = 0;
+            double highestKinetic = 0, kinetic = 0;
             float top = 0f;
-            for (int f = 0; f < 120; f++)
+            for (int f = 0; f < 180; f++)
             {
                 FluidTestScenes.Step(c, b, 1f / 60f);
                 double ke = 0;
@@ -177,7 +179,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                     ke += 0.5 * math.lengthsq(b.Velocities[i]);
                     top = math.max(top, b.Positions[i].y);
                 }
-                highestKinetic = math.max(highestKinetic, ke / b.Status.Count);
+                kinetic = ke / b.Status.Count;
+                highestKinetic = math.max(highestKinetic, kinetic);
             }
             double density = 0;
             int bulk = 0;
@@ -188,12 +191,14 @@ namespace SoftBodyDynamics.Tests.Solvers
                     bulk++;
                 }
             density /= bulk;
-            TestContext.WriteLine($"highest kinetic energy {highestKinetic:E2} J/kg, top {top:F3} m, bulk density error {density:P2}");
+            TestContext.WriteLine($"highest kinetic energy {highestKinetic:E2} J/kg, after 3 s {kinetic:E2} J/kg, top {top:F3} m, bulk density error {density:P2}");
             Assert.AreEqual(1440, b.Status.Count);
             // No collapse: less kinetic energy than a 1 cm free fall (g·0.01 m ≈ 0.1 J/kg; the collapse reaches 4–11 J/kg),
-            // and no particle more than five layers above the start (the surface jitters by one or two; the splash reaches the lid).
+            // and no particle more than five layers above the start (the released lattice rises by about one as the
+            // artificial pressure spreads it; the splash reaches the lid).
             Assert.That(highestKinetic, Is.LessThan(0.1));
             Assert.That(top, Is.LessThan(0.8f + 5 * 0.02f));
+            Assert.That(kinetic, Is.LessThan(1e-5));
             Assert.That(density, Is.LessThan(0.02));
         }
 
@@ -201,9 +206,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void PositionBased_DensityErrorFallsWithIterations()
         {
             // Jacobi iterations of the density constraint converge: four times the iterations must leave a clearly
-            // smaller error (the settled column, one substep per 1/60 s frame).
-            double e4 = SettledColumn(FluidSolverKind.PositionBased, 4).densityError;
-            double e16 = SettledColumn(FluidSolverKind.PositionBased, 16).densityError;
+            // smaller error (the settled column). Without the artificial pressure, whose repulsion is part of what the
+            // iterations solve and so sets a floor of its own (about 1.6 % on this column at the default k = 0.1).
+            double e4 = SettledColumn(FluidSolverKind.PositionBased, 4, 0f).densityError;
+            double e16 = SettledColumn(FluidSolverKind.PositionBased, 16, 0f).densityError;
             TestContext.WriteLine($"density error: 4 iterations {e4:P2}, 16 iterations {e16:P2}");
             Assert.That(e16, Is.LessThan(0.7 * e4));
         }
