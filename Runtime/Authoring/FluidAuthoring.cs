@@ -59,9 +59,9 @@ namespace SoftBodyDynamics.Authoring
         [Range(1, 100)]
         public int pressureIterations = 4;
 
-        [Tooltip("Position-based: artificial pressure k (0–0.5), a short-range repulsion (Macklin & Müller 2013) that holds the free surface still; k reads as a density error. It sets a floor of its own on the density error (a 10-layer column: 1.9 % at 4 iterations, 1.6 % at 16, against 1.4 % and 0.7 % without it). Default 0.1; 0 = off.")]
+        [Tooltip("Position-based: artificial pressure k (0–0.5), a short-range repulsion (Macklin & Müller 2013) that holds the free surface still; k reads as a density error. Larger values spread thin flows (a dam break's density error 4 % at 0.01, 15 % at 0.1). Default 0.01; 0 = off.")]
         [Range(0f, 0.5f)]
-        public float artificialPressure = 0.1f;
+        public float artificialPressure = 0.01f;
 
         [Tooltip("Custom material: kinematic viscosity ν (m²/s). Water 1e-6, oil 1e-4, honey 7e-3. Implicit: any value is stable.")]
         [Min(0f)]
@@ -82,7 +82,7 @@ namespace SoftBodyDynamics.Authoring
         [Min(0f)]
         public float separationWeight;
 
-        [Tooltip("Flocking: rate at which a velocity relaxes toward its neighbours' mean (1/s). 0 = off.")]
+        [Tooltip("XSPH velocity smoothing for any solver (the flocking rules' alignment): rate at which a velocity relaxes toward its neighbours' mean (1/s). A position-based fluid at rest settles much further with about 5/s. 0 = off.")]
         [Min(0f)]
         public float alignmentRate;
 

@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Solvers
         public readonly float BulkPressureScale;
         /// <summary>
         /// Position-based: k·λ₁ (m²), the artificial pressure's scale: k = <see cref="FluidParameters.ArtificialPressure"/> and
-        /// λ₁ = 1/Σ|∇Cₖ|² over a rest lattice, the λ of a unit density error, so k reads as a density error (0.1: 10 % at r = Δq).
+        /// λ₁ = 1/Σ|∇Cₖ|² over a rest lattice, the λ of a unit density error, so k reads as a density error (0.01: 1 % at r = Δq).
         /// </summary>
         public readonly float ArtificialPressureScale;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>

@@ -81,7 +81,7 @@ namespace SoftBodyDynamics.Solvers
                     passes[n++] = (it & 1) == 0 ? FluidPass.ViscosityAToB : FluidPass.ViscosityBToA;
                 passes[n++] = (iterations & 1) == 1 ? FluidPass.CopyBToVelocities : FluidPass.CopyAToVelocities;
             }
-            if (p.Cohesion == FluidCohesionModel.Flocking && p.AlignmentRate > 0f)
+            if (p.AlignmentRate > 0f)
             {
                 passes[n++] = FluidPass.Alignment;
                 passes[n++] = FluidPass.CopyAToVelocities;
