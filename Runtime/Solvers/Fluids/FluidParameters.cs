@@ -40,8 +40,8 @@ namespace SoftBodyDynamics.Solvers
         /// Position-based: artificial pressure k (dimensionless; Macklin &amp; Müller 2013, eqs. 13–14): a short-range
         /// repulsion s_corr = −k·λ₁·(W(r)/W(0.2h))⁴, λ₁ the constraint's λ for a unit density error, so k reads as a
         /// density error. It holds the free surface, where the clamped constraint is inactive and 4 Jacobi iterations left
-        /// the top layers of a deep column jittering (a 40-layer column kept 6·10⁻³ J/kg after 3 s without it, 1.3·10⁻⁴ with
-        /// 0.01, 2·10⁻⁶ with 0.1). Its repulsion also spreads thin flows: at 0.1 the dam break's density error rose from 4 to
+        /// the top layers of a deep column jittering (a 40-layer column kept 7·10⁻³ J/kg after 3 s without it, 0.5–1.3·10⁻⁴ with
+        /// 0.01, 3·10⁻⁶ with 0.1). Its repulsion also spreads thin flows: at 0.1 the dam break's density error rose from 4 to
         /// 15 % (2 iterations), at 0.01 to 4.3 %. 0–0.5, default 0.01 (0 = off).
         /// </summary>
         public float ArtificialPressure;
@@ -60,7 +60,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// XSPH velocity smoothing (Monaghan 1989; the flocking rules' alignment): rate at which a velocity relaxes toward the
         /// neighbours' kernel-weighted mean, 1/s, for any solver and cohesion model. 0 = off. Position-based fluids at rest
-        /// settle much further with it (Macklin &amp; Müller 2013 use it, eq. 17): a 40-layer column 1.3·10⁻⁴ → 5.8·10⁻⁶ J/kg after 3 s at 5/s.
+        /// settle much further with it (Macklin &amp; Müller 2013 use it, eq. 17): a 40-layer column 4.5·10⁻⁵ → 5·10⁻⁷ J/kg after 3 s at 10/s.
         /// </summary>
         public float AlignmentRate;
         /// <summary>
