@@ -14,7 +14,7 @@ void ClearStats(uint3 id : SV_DispatchThreadID)
 }
 
 // FluidSolver.Begin: ages += dt and the fastest finite speed (as the bits of v², which order like the floats);
-// position-based also the extent along gravity (FluidSolver.Depth): height s = (x − DomainMin)·(−ĝ) in [−L, L],
+// position-based also the extent along gravity (FluidSolver.Depth): height s = (x clamped to the box − DomainMin)·(−ĝ) in [−L, L],
 // L the domain's diagonal, kept as the maxima of s + L and L − s (non-negative, so their bits order like the floats).
 [numthreads(FLUID_GROUP, 1, 1)]
 void BeginStep(uint3 id : SV_DispatchThreadID)
@@ -26,9 +26,10 @@ void BeginStep(uint3 id : SV_DispatchThreadID)
     float v2 = dot(v, v);
     if (v2 > 0.0 && v2 <= FLOAT_MAX) InterlockedMax(_Stats[STAT_MAX_SPEED_SQUARED], asuint(v2));
     float g = length(_Gravity.xyz);
-    if (_Flags.x == 0 && g > 0.0)
+    float3 x = _Positions[i].xyz;
+    if (_Flags.x == 0 && g > 0.0 && IsFinite3(x))
     {
-        float s = dot(_Positions[i].xyz - _DomainMin.xyz, -_Gravity.xyz / g);
+        float s = dot(clamp(x, _DomainMin.xyz, _DomainMax.xyz) - _DomainMin.xyz, -_Gravity.xyz / g);
         float L = length(_DomainMax.xyz - _DomainMin.xyz);
         if (s >= -L && s <= L)
         {

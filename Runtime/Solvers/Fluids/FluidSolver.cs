@@ -138,8 +138,9 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Position-based: the depth the substep rule plans for (m), the extent of the particles along gravity plus one
-        /// spacing (a splash above the pool counts as depth: the rule errs toward more substeps). 0 for the weakly
-        /// compressible solver, whose substep does not depend on it; non-finite positions are skipped.
+        /// spacing (a splash above the pool counts as depth: the rule errs toward more substeps). Positions count clamped
+        /// into the domain box (the step puts them there), so a stray 1e20 m cannot ask for every substep; non-finite ones
+        /// are skipped. 0 for the weakly compressible solver, whose substep does not depend on it.
         /// </summary>
         public static float Depth(in FluidConstants c, ReadOnlySpan<float3> positions)
         {
@@ -151,9 +152,10 @@ namespace SoftBodyDynamics.Solvers
             float lo = float.PositiveInfinity, hi = float.NegativeInfinity;
             for (int i = 0; i < positions.Length; i++)
             {
-                float y = math.dot(positions[i] - p.DomainMin, up);
-                if (!math.isfinite(y))
+                float3 x = positions[i];
+                if (!math.all(math.isfinite(x)))
                     continue;
+                float y = math.dot(math.clamp(x, p.DomainMin, p.DomainMax) - p.DomainMin, up);
                 lo = math.min(lo, y);
                 hi = math.max(hi, y);
             }

@@ -195,6 +195,22 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void Depth_IsTheExtentAlongGravityInsideTheBox()
+        {
+            // Two particles 0.3 m apart vertically: depth 0.3 + Δx. A stray one at y = 1e20 counts as on the lid (1 m), a NaN one
+            // not at all; the weakly compressible solver plans no depth.
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(1f));
+            p.Solver = FluidSolverKind.PositionBased;
+            var c = new FluidConstants(p);
+            var x = new[] { new float3(0.5f, 0.1f, 0.5f), new float3(0.5f, 0.4f, 0.5f), new float3(float.NaN) };
+            Assert.That(FluidSolver.Depth(c, x), Is.EqualTo(0.32f).Within(1e-6f));
+            x[2] = new float3(0.5f, 1e20f, 0.5f);
+            Assert.That(FluidSolver.Depth(c, x), Is.EqualTo(0.92f).Within(1e-6f));
+            p.Solver = FluidSolverKind.WeaklyCompressible;
+            Assert.That(FluidSolver.Depth(new FluidConstants(p), x), Is.EqualTo(0f));
+        }
+
+        [Test]
         public void PositionBasedDefaults_HoldAFortyLayerColumn()
         {
             // One substep per frame lets gravity press the column by g·h² = 2.7 mm a substep while 4 Jacobi iterations lift
