@@ -93,12 +93,13 @@ namespace SoftBodyDynamics.Solvers
             {
                 float r2 = spacing * spacing * (x * x + y * y + z * z);
                 double q = math.max(kernels.H2 - r2, 0f);
+                double spiky = kernels.SpikyGradientScale(math.sqrt(r2));
                 sum += term switch
                 {
                     LatticeTerm.Poly6 => kernels.Poly6(r2),
-                    LatticeTerm.GradientDotOffset => (double)kernels.SpikyGradientScale(math.sqrt(r2)) * r2,
+                    LatticeTerm.GradientDotOffset => spiky * r2,
                     // |∇W|² = (SpikyGradientScale(r)·r)².
-                    LatticeTerm.GradientSquared => (double)kernels.SpikyGradientScale(math.sqrt(r2)) * kernels.SpikyGradientScale(math.sqrt(r2)) * r2,
+                    LatticeTerm.GradientSquared => spiky * spiky * r2,
                     // r·∇W_poly6 = −6C(h² − r²)²·r².
                     _ => -6.0 * kernels.Poly6Coefficient * q * q * r2,
                 };

@@ -40,7 +40,7 @@ namespace SoftBodyDynamics.Solvers
         /// Position-based: artificial pressure k (dimensionless; Macklin &amp; Müller 2013, eqs. 13–14): a short-range
         /// repulsion s_corr = −k·λ₁·(W(r)/W(0.2h))⁴, λ₁ the constraint's λ for a unit density error, so k reads as a
         /// density error. It holds the free surface, where the clamped constraint is inactive and 4 Jacobi iterations left
-        /// the top layers of a deep column jittering (a 40-layer column kept 7·10⁻³ J/kg after 3 s without it, 0.5–1.3·10⁻⁴ with
+        /// the top layers of a deep column jittering (a 40-layer column kept 7·10⁻³ J/kg after 3 s without it, 0.45–1.3·10⁻⁴ with
         /// 0.01, 3·10⁻⁶ with 0.1). Its repulsion also spreads thin flows: at 0.1 the dam break's density error rose from 4 to
         /// 15 % (2 iterations), at 0.01 to 4.3 %. 0–0.5, default 0.01 (0 = off).
         /// </summary>

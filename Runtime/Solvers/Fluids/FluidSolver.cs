@@ -38,28 +38,21 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Position-based: the density error a column of <paramref name="depth"/> metres settles to with substeps of
-        /// <paramref name="substep"/> seconds, ε ≈ <see cref="PositionBasedDepthErrorFactor"/>·g·h²·D / (Δx²·iterations):
-        /// each substep gravity presses the column by g·h², and the Jacobi iterations lift it back only a few layers per
-        /// iteration, so the error grows with the number of layers D/Δx over the iterations (measured on 10- to 40-layer
-        /// columns at Δx = 2 cm, h = 2Δx, 2 to 32 iterations·substeps; docs: fluids.md).
+        /// Constant A of the density error a position-based column D metres deep settles to with substeps of h seconds,
+        /// ε ≈ A·g·h²·D / (Δx²·iterations): each substep gravity presses the column by g·h², and the Jacobi iterations lift
+        /// it back only a few layers per iteration, so the error grows with the layers D/Δx over the iterations. Fitted on
+        /// 10-, 20- and 40-layer columns at Δx = 2 cm, h = 2Δx, 8 to 32 iterations × substeps per 1/60 s frame: 0.22–0.26
+        /// where ε was 1–4 % (0.38 at 0.8 %; docs: fluids.md).
         /// </summary>
-        public static float PositionBasedDepthError(in FluidConstants c, float depth, float substep)
-        {
-            FluidParameters p = c.Parameters;
-            float dx = p.ParticleSpacing;
-            return PositionBasedDepthErrorFactor * math.length(p.Gravity) * substep * substep * depth / (dx * dx * p.PressureIterations);
-        }
-
-        /// <summary>Constant of <see cref="PositionBasedDepthError"/> (dimensionless, fitted: 0.22–0.24 over the measured columns).</summary>
         public const float PositionBasedDepthErrorFactor = 0.23f;
 
         /// <summary>Position-based: the density error the depth rule of <see cref="Substeps"/> allows (1 %).</summary>
         public const float PositionBasedDepthTolerance = 0.01f;
 
         /// <summary>
-        /// Position-based: the longest substep (s) that keeps <see cref="PositionBasedDepthError"/> of a column
-        /// <paramref name="depth"/> metres deep within <see cref="PositionBasedDepthTolerance"/>; infinity without depth or gravity.
+        /// Position-based: the longest substep (s) that keeps the settled density error of a column <paramref name="depth"/>
+        /// metres deep (<see cref="PositionBasedDepthErrorFactor"/>) within <see cref="PositionBasedDepthTolerance"/>:
+        /// h = Δx·√(ε·iterations / (A·g·D)); infinity without depth or gravity.
         /// </summary>
         public static float DepthSubstep(in FluidConstants c, float depth)
         {
