@@ -174,7 +174,7 @@ namespace SoftBodyDynamics
             if (report.Step.Invalid > 0)
                 Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the NaN guard removed {report.Step.Invalid} particle(s) with a non-finite position or velocity.");
             if (report.Step.SubstepsWanted > report.Step.Substeps)
-                Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the CFL limit asked for {report.Step.SubstepsWanted} substeps, capped at {report.Step.Substeps}, so the fluid ran {report.Step.SimulatedTime:0.####} s of this frame (slow motion); lower the speed of sound or raise the substep cap.");
+                Debug.LogWarning($"Fluid Entity({entity.Index}:{entity.Version}): the substep limit (CFL; position-based also the depth rule) asked for {report.Step.SubstepsWanted} substeps, capped at {report.Step.Substeps}, so the fluid ran {report.Step.SimulatedTime:0.####} s of this frame (slow motion); lower the speed of sound (weakly compressible), raise the iterations (position-based) or raise the substep cap.");
         }
 
         /// <summary>A whole frame single-threaded (drains, taps, <see cref="FluidSolver.Step"/>), for Entities storage.</summary>

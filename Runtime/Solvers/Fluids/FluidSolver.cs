@@ -95,7 +95,7 @@ namespace SoftBodyDynamics.Solvers
         {
             /// <summary>Substeps to run.</summary>
             public int Substeps;
-            /// <summary>Substeps the CFL limit asked for (above <see cref="Substeps"/> when capped).</summary>
+            /// <summary>Substeps the limits asked for: CFL, and position-based the depth rule (above <see cref="Substeps"/> when capped).</summary>
             public int SubstepsWanted;
             /// <summary>Substep length h = dt / <see cref="SubstepsWanted"/> (s); 0 when the step does nothing.</summary>
             public float H;
