@@ -20,6 +20,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new MethodStudyRankingSuite(),
             new SoftBodyMethodsThroughputSuite(),
             new FluidAccuracySuite(),
+            new FluidPoiseuilleSuite(),
             new FluidThroughputSuite(),
         };
     }

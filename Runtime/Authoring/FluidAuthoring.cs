@@ -134,6 +134,18 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Coulomb friction μ of the domain box's faces normal to x, y and z (0 = free slip, at most 1). The floor is y: a particle resting on it slides with deceleration μ.y·g.")]
         public Vector3 domainFriction;
 
+        [Tooltip("No-slip share of the domain box's faces normal to x, y and z (0 = free slip, 1 = no slip): in the viscosity solve the face holds the fluid beside it at rest. Needs a viscosity and at least one viscosity iteration. CPU only.")]
+        public Vector3 domainNoSlip;
+
+        [Tooltip("Periodic along x: a particle leaving through one x face enters through the other, and there is no wall on that axis (a channel standing for an unbounded flow). The extent must be at least 3 kernel radii. CPU only.")]
+        public bool periodicX;
+
+        [Tooltip("Periodic along y (see Periodic X). CPU only.")]
+        public bool periodicY;
+
+        [Tooltip("Periodic along z (see Periodic X). CPU only.")]
+        public bool periodicZ;
+
         /// <summary>The solver settings these fields describe (the preset's material when one is chosen), in world space.</summary>
         public FluidParameters ToParameters()
         {
@@ -166,6 +178,8 @@ namespace SoftBodyDynamics.Authoring
             p.MaxSubsteps = maxSubsteps;
             p.WallFriction = wallFriction;
             p.DomainFriction = UnityMathConversions.ToFloat3(domainFriction);
+            p.DomainNoSlip = UnityMathConversions.ToFloat3(domainNoSlip);
+            p.Periodic = new Unity.Mathematics.bool3(periodicX, periodicY, periodicZ);
             return p;
         }
 

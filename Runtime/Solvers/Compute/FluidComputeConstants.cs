@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Solvers
                 Motion = new float4(h, p.MaxSpeed, 2f * p.ArtificialViscosity * p.SpeedOfSound * k.H, c.Relaxation),
                 Cohesion = new float4(p.CohesionWeight, p.SeparationWeight, p.ParticleSpacing, p.SurfaceTension),
                 // The same expressions as FluidPasses.ViscosityIteration and Alignment, so the GPU gets the CPU's bits.
-                Smoothing = new float4(h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient,
+                Smoothing = new float4(h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient * c.ViscosityCorrection,
                     1f - math.exp(-p.AlignmentRate * h), dt, c.BulkPressureScale),
                 Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
                 ShapeCounts = new int4(colliders, drains, 0, 0),

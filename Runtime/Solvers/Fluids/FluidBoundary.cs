@@ -27,6 +27,13 @@ namespace SoftBodyDynamics.Solvers
             float3 above = c.Parameters.DomainMax - x;
             float inside = 1f;
             push = float3.zero;
+            bool3 periodic = c.Parameters.Periodic;
+            if (c.IsPeriodic)
+            {
+                // A periodic axis has no faces.
+                below = math.select(below, new float3(float.PositiveInfinity), periodic);
+                above = math.select(above, new float3(float.PositiveInfinity), periodic);
+            }
             float nearest = math.min(math.cmin(below), math.cmin(above));
             if (nearest >= k.H && colliders.Length == 0)
             {
@@ -63,8 +70,24 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
+        /// Σ over the domain faces within h of <paramref name="x"/> of the no-slip share s (<see cref="FluidParameters.DomainNoSlip"/>)
+        /// times the no-slip wall integral (m⁴; <see cref="SphKernels.NoSlipWallIntegral"/>): the viscosity kernel's Laplacian
+        /// over the wall with the particle's velocity mirrored through zero at the face, up to the factor the particles' sum
+        /// shares. It only adds to the particle's own weight in the viscosity solve. Periodic axes have no faces.
+        /// </summary>
+        public static float NoSlipWeight(in FluidConstants c, float3 x)
+        {
+            SphKernels k = c.Kernels;
+            float3 s = math.select(c.Parameters.DomainNoSlip, float3.zero, c.Parameters.Periodic);
+            float3 below = x - c.Parameters.DomainMin, above = c.Parameters.DomainMax - x;
+            return s.x * (k.NoSlipWallIntegral(below.x) + k.NoSlipWallIntegral(above.x))
+                + s.y * (k.NoSlipWallIntegral(below.y) + k.NoSlipWallIntegral(above.y))
+                + s.z * (k.NoSlipWallIntegral(below.z) + k.NoSlipWallIntegral(above.z));
+        }
+
+        /// <summary>
         /// Keeps <paramref name="x"/> at least <see cref="FluidConstants.WallDistance"/> inside the domain box and
-        /// removes the velocity component into a face it touches. With <see cref="FluidParameters.DomainFriction"/> μ (per
+        /// removes the velocity component into a face it touches; on a periodic axis it wraps <paramref name="x"/> into the box instead. With <see cref="FluidParameters.DomainFriction"/> μ (per
         /// axis) the faces are Coulomb walls like the colliders (<see cref="ContactProjection"/>): the motion along them since
         /// <paramref name="start"/> is cancelled by at most Σ μ_axis × the depth pushed out along that axis, and the velocity
         /// along them by the same share (a particle resting on the floor then slides with deceleration μ.y·g). Returns true
@@ -74,6 +97,15 @@ namespace SoftBodyDynamics.Solvers
         {
             float3 lo = c.Parameters.DomainMin + c.WallDistance;
             float3 hi = c.Parameters.DomainMax - c.WallDistance;
+            if (c.IsPeriodic)
+            {
+                // Periodic axes wrap instead (the motion along them since start is the nearest image's).
+                float3 wrapped = c.Wrap(x);
+                start += wrapped - x;
+                x = wrapped;
+                lo = math.select(lo, new float3(float.NegativeInfinity), c.Parameters.Periodic);
+                hi = math.select(hi, new float3(float.PositiveInfinity), c.Parameters.Periodic);
+            }
             float3 clamped = math.clamp(x, lo, hi);
             if (math.all(clamped == x))
                 return false;

@@ -31,6 +31,13 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public readonly float GradientCorrection;
         /// <summary>
+        /// Scale κ_ν on the viscosity Laplacian Σⱼ (m/ρ)·∇²W_visc(rᵢⱼ)·(vⱼ − vᵢ) so that the rest lattice differentiates a
+        /// quadratic field exactly: the continuum identity ∫ z²·∇²W dV = 2 holds on the discrete lattice only to a per cent or
+        /// so at h = 2Δx, which a steady shear flow would show as that error in its viscosity whatever the resolution.
+        /// κ_ν = 2 / (V·Σⱼ zⱼ²·∇²W(rⱼ)) over the lattice neighbours (V = m/ρ₀).
+        /// </summary>
+        public readonly float ViscosityCorrection;
+        /// <summary>
         /// Weakly compressible: the bulk-viscous pressure −ρ₀ζ·∇·vᵢ is this times D/ρᵢ, D = Σⱼ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)²
         /// (the Density pass's sum): ∇·vᵢ = (m/ρᵢ)·Σⱼ (vⱼ − vᵢ)·∇W_poly6 = −6C·κ₆·(m/ρᵢ)·D with the poly6 gradient
         /// ∇W = −6C(h² − r²)²·xᵢⱼ, no square root, and κ₆ its lattice correction (as <see cref="GradientCorrection"/>),
@@ -42,6 +49,12 @@ namespace SoftBodyDynamics.Solvers
         /// λ₁ = 1/Σ|∇Cₖ|² over a rest lattice, the λ of a unit density error, so k reads as a density error (0.01: 1 % at r = Δq).
         /// </summary>
         public readonly float ArtificialPressureScale;
+        /// <summary>True when the domain has a periodic axis (<see cref="FluidParameters.Periodic"/>).</summary>
+        public readonly bool IsPeriodic;
+        /// <summary>The domain's extent on its periodic axes, 0 on the others (m).</summary>
+        public readonly float3 Period;
+        /// <summary>1 / <see cref="Period"/> on the periodic axes, 0 on the others (1/m).</summary>
+        public readonly float3 InversePeriod;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -57,6 +70,7 @@ namespace SoftBodyDynamics.Solvers
             float continuum = Kernels.WallDensityFraction(WallDistance);
             WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));
+            ViscosityCorrection = 2f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.ViscosityLaplacianZ2, false));
             float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset, false));
             BulkPressureScale = Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h
                 * 6f * Kernels.Poly6Coefficient * poly6Correction * Mass;
@@ -65,11 +79,39 @@ namespace SoftBodyDynamics.Solvers
             ArtificialPressureScale = Parameters.Solver == FluidSolverKind.PositionBased && gradientSquares > 0f
                 ? Parameters.ArtificialPressure / gradientSquares : 0f;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
+            bool3 periodic = Parameters.Periodic;
+            IsPeriodic = math.any(periodic);
+            float3 extent = Parameters.DomainMax - Parameters.DomainMin;
+            Period = new float3(periodic.x ? extent.x : 0f, periodic.y ? extent.y : 0f, periodic.z ? extent.z : 0f);
+            InversePeriod = new float3(periodic.x ? 1f / extent.x : 0f, periodic.y ? 1f / extent.y : 0f, periodic.z ? 1f / extent.z : 0f);
+        }
+
+        /// <summary>
+        /// The offset <paramref name="d"/> = xᵢ − xⱼ between the nearest images on the periodic axes (minimum image: each
+        /// component within half a period); unchanged on the other axes. Callers test <see cref="IsPeriodic"/> first.
+        /// </summary>
+        public float3 MinimumImage(float3 d) => d - Period * math.round(d * InversePeriod);
+
+        /// <summary>xᵢ − xⱼ, between the nearest images when the domain is periodic.</summary>
+        public float3 Offset(float3 xi, float3 xj) => IsPeriodic ? MinimumImage(xi - xj) : xi - xj;
+
+        /// <summary>
+        /// <paramref name="x"/> moved by whole periods into [DomainMin, DomainMax) on the periodic axes; the other axes are
+        /// unchanged.
+        /// </summary>
+        public float3 Wrap(float3 x)
+        {
+            float3 min = Parameters.DomainMin;
+            bool3 periodic = Parameters.Periodic;
+            if (periodic.x) x.x -= Period.x * math.floor((x.x - min.x) * InversePeriod.x);
+            if (periodic.y) x.y -= Period.y * math.floor((x.y - min.y) * InversePeriod.y);
+            if (periodic.z) x.z -= Period.z * math.floor((x.z - min.z) * InversePeriod.z);
+            return x;
         }
 
         /// <summary>The grid of a fluid: its domain box in cells of the kernel radius.</summary>
         public static FluidGrid GridOf(in FluidParameters sanitized) =>
-            new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius);
+            new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius, sanitized.Periodic);
 
         /// <summary>Σ rₖ·∇W(rₖ) = Σ SpikyGradientScale(r)·r² over the lattice neighbours k ≠ 0 (1/m³; negative).</summary>
         public static float LatticeGradientSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.GradientDotOffset, false);
@@ -80,7 +122,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
         public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, false);
 
-        enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset, GradientSquared }
+        enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset, GradientSquared, ViscosityLaplacianZ2 }
 
         /// <summary>A kernel term summed in double over the cubic lattice around a particle (only the layers k.z ≥ 1 when <paramref name="beyondWall"/>).</summary>
         static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall)
@@ -100,6 +142,7 @@ namespace SoftBodyDynamics.Solvers
                     LatticeTerm.GradientDotOffset => spiky * r2,
                     // |∇W|² = (SpikyGradientScale(r)·r)².
                     LatticeTerm.GradientSquared => spiky * spiky * r2,
+                    LatticeTerm.ViscosityLaplacianZ2 => (double)spacing * spacing * z * z * kernels.ViscosityLaplacian(math.sqrt(r2)),
                     // r·∇W_poly6 = −6C(h² − r²)²·r².
                     _ => -6.0 * kernels.Poly6Coefficient * q * q * r2,
                 };

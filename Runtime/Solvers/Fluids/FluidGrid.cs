@@ -19,6 +19,10 @@ namespace SoftBodyDynamics.Solvers
         public readonly float InverseCellSize;
         /// <summary>Cells along x, y, z (each ≥ 1).</summary>
         public readonly int3 Dimensions;
+        /// <summary>Periodic axes (<see cref="FluidParameters.Periodic"/>): the neighbour search wraps around them.</summary>
+        public readonly bool3 Periodic;
+        /// <summary>The box's extent in cells (not rounded; the last cell of an axis may be partial).</summary>
+        public readonly float3 ExtentInCells;
 
         /// <summary>Cells searched on each side of a particle's own: the cell edge is h / SearchRange.</summary>
         public const int SearchRange = 2;
@@ -27,7 +31,10 @@ namespace SoftBodyDynamics.Solvers
         public const int MaxCells = 1 << 24;
 
         /// <summary>The grid over [<paramref name="min"/>, <paramref name="max"/>] for kernel radius <paramref name="kernelRadius"/>: cells of h / <see cref="SearchRange"/>, coarsened while the grid has more than <see cref="MaxCells"/>.</summary>
-        public FluidGrid(float3 min, float3 max, float kernelRadius)
+        public FluidGrid(float3 min, float3 max, float kernelRadius) : this(min, max, kernelRadius, new bool3(false, false, false)) { }
+
+        /// <summary>The grid of <see cref="FluidGrid(float3, float3, float)"/> with the periodic axes <paramref name="periodic"/>.</summary>
+        public FluidGrid(float3 min, float3 max, float kernelRadius, bool3 periodic)
         {
             float cellSize = kernelRadius / SearchRange;
             float3 extent = math.max(max - min, new float3(cellSize));
@@ -42,6 +49,8 @@ namespace SoftBodyDynamics.Solvers
             CellSize = cellSize;
             InverseCellSize = 1f / cellSize;
             Dimensions = dims;
+            Periodic = periodic;
+            ExtentInCells = extent / cellSize;
         }
 
         static int3 CellsAcross(float3 extent, float cellSize) => new int3(

@@ -83,6 +83,20 @@ namespace SoftBodyDynamics.Solvers
         /// free-slip (symmetry planes) while its floor grips. Default 0.
         /// </summary>
         public float3 DomainFriction;
+        /// <summary>
+        /// No-slip share of the domain box's faces normal to x, y and z (0 = free slip, 1 = no slip, between: partial slip),
+        /// acting in the viscosity solve: a face counts as a wall of fluid at rest, the viscous kernel's integral over it
+        /// pulling the particles near it toward zero tangential velocity (the continuous form of Akinci 2012's boundary
+        /// particles, for the viscosity term; <see cref="FluidBoundary.NoSlipWeight"/>). Needs <see cref="Viscosity"/> and
+        /// at least one viscosity iteration. Default 0.
+        /// </summary>
+        public float3 DomainNoSlip;
+        /// <summary>
+        /// Periodic axes of the domain box: a particle leaving through one face enters through the opposite one, and the
+        /// particles near the two faces are neighbours (no wall on that axis), so a channel or a slab can stand for an
+        /// unbounded flow. An axis needs an extent of at least 3h (shorter: not periodic). Default none.
+        /// </summary>
+        public bool3 Periodic;
         /// <summary>CFL number λ of the adaptive substep: h·λ / (c₀ + v_max) (weakly compressible) or h·λ / v_max (position-based). Default 0.4.</summary>
         public float CflNumber;
         /// <summary>Most substeps per step (1–256). When the CFL limit asks for more, the step reports it and runs this many. Default 32.</summary>
@@ -98,6 +112,8 @@ namespace SoftBodyDynamics.Solvers
         public const int MaxPressureIterations = 100;
         /// <summary>Most viscosity Jacobi iterations per substep.</summary>
         public const int MaxViscosityIterations = 50;
+        /// <summary>Shortest extent of a periodic axis in kernel radii: two images of a particle never both lie within h of another.</summary>
+        public const float MinPeriodicExtentRatio = 3f;
         /// <summary>Tait exponent γ (Becker &amp; Teschner 2007).</summary>
         public const float TaitExponent = 7f;
 
@@ -128,13 +144,15 @@ namespace SoftBodyDynamics.Solvers
             DomainMax = new float3(0.5f, 1f, 0.5f),
             WallFriction = 0f,
             DomainFriction = float3.zero,
+            DomainNoSlip = float3.zero,
+            Periodic = new bool3(false, false, false),
             CflNumber = 0.4f,
             MaxSubsteps = 32,
             MaxSpeed = 50f,
             MaxDensityRatio = 1.5f,
         };
 
-        /// <summary>A Coulomb coefficient in [0, 1]; NaN is free slip.</summary>
+        /// <summary>A Coulomb coefficient or no-slip share in [0, 1]; NaN is free slip.</summary>
         static float Friction(float mu) => math.isnan(mu) ? 0f : math.saturate(mu);
 
         /// <summary>A copy the step can trust: NaN or out-of-range values replaced by the nearest valid value (or the default).</summary>
@@ -168,6 +186,10 @@ namespace SoftBodyDynamics.Solvers
             }
             p.WallFriction = Friction(WallFriction);
             p.DomainFriction = new float3(Friction(DomainFriction.x), Friction(DomainFriction.y), Friction(DomainFriction.z));
+            p.DomainNoSlip = new float3(Friction(DomainNoSlip.x), Friction(DomainNoSlip.y), Friction(DomainNoSlip.z));
+            float3 extent = p.DomainMax - p.DomainMin;
+            float shortest = MinPeriodicExtentRatio * p.KernelRadius;
+            p.Periodic = new bool3(Periodic.x && extent.x >= shortest, Periodic.y && extent.y >= shortest, Periodic.z && extent.z >= shortest);
             p.CflNumber = math.isfinite(CflNumber) ? math.clamp(CflNumber, 0.05f, 1f) : d.CflNumber;
             p.MaxSubsteps = math.clamp(MaxSubsteps, 1, SubstepLimit);
             p.MaxSpeed = Finite.Positive(MaxSpeed, d.MaxSpeed);

@@ -104,10 +104,12 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
             ReadOnlySpan<int> cellStart = s.CellStart;
             Span<int> neighbours = s.Neighbours;
+            bool periodic = c.IsPeriodic;
+            var rows = new NeighbourRows();
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
-                NeighbourRows rows = NeighbourRows.Find(c.Grid, cellStart, xi);
+                NeighbourRows.Find(c.Grid, cellStart, xi, ref rows);
                 int listStart = i * cap, found = 0;
                 // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once. With bulk viscosity also
                 // Σ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)², the poly6-gradient divergence up to its factor (FluidConstants.BulkPressureScale).
@@ -119,6 +121,8 @@ namespace SoftBodyDynamics.Solvers
                     for (int j = rows.Begin(r); j < rowEnd; j++)
                     {
                         float3 d = xi - x[j];
+                        if (periodic)
+                            d = c.MinimumImage(d);
                         float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
                         if (!(q > 0f))
                             continue;
@@ -160,6 +164,7 @@ namespace SoftBodyDynamics.Solvers
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions;
             ReadOnlySpan<int> neighbours = s.Neighbours;
+            bool periodic = c.IsPeriodic;
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
@@ -169,6 +174,8 @@ namespace SoftBodyDynamics.Solvers
                 for (int n = 0; n < list.Length; n++)
                 {
                     float3 d = xi - x[list[n]];
+                    if (periodic)
+                        d = c.MinimumImage(d);
                     float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
                     if (q > 0f)
                         sum += q * q * q;
@@ -209,7 +216,7 @@ namespace SoftBodyDynamics.Solvers
                 for (int a = 0; a < count; a++)
                 {
                     int j = s.Neighbours[i * cap + a];
-                    float3 rij = xi - p.Positions[j];
+                    float3 rij = c.Offset(xi, p.Positions[j]);
                     n += (m / s.Densities[j]) * k.SpikyGradientScale(math.length(rij)) * rij;
                 }
                 s.VectorsB[i] = k.H * n;
@@ -261,11 +268,14 @@ namespace SoftBodyDynamics.Solvers
             float rhoi = densities[i];
             float3 vi = velocities[i];
             float3 sum = float3.zero;
+            bool periodic = c.IsPeriodic;
             ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
             for (int n = 0; n < list.Length; n++)
             {
                 int j = list[n];
                 float3 rij = xi - x[j];
+                if (periodic)
+                    rij = c.MinimumImage(rij);
                 float r2 = math.dot(rij, rij);
                 float r = math.sqrt(r2);
                 float scale = pi + pressures[j];
@@ -299,8 +309,8 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
             for (int n = 0; n < list.Length; n++)
             {
-                float3 xj = p.Positions[list[n]];
-                float3 rij = xi - xj;
+                float3 rij = c.Offset(xi, p.Positions[list[n]]);
+                float3 xj = xi - rij;
                 float r2 = math.lengthsq(rij);
                 float w = k.Poly6(r2);
                 centroid += w * xj;
@@ -327,7 +337,7 @@ namespace SoftBodyDynamics.Solvers
             for (int n = 0; n < list.Length; n++)
             {
                 int j = list[n];
-                float3 rij = xi - p.Positions[j];
+                float3 rij = c.Offset(xi, p.Positions[j]);
                 float r = math.length(rij);
                 if (!(r < k.H))
                     continue;
@@ -365,24 +375,30 @@ namespace SoftBodyDynamics.Solvers
         {
             SphKernels k = c.Kernels;
             float hnu = h * c.Parameters.Viscosity;
-            // wᵢⱼ = m·2/(ρᵢ + ρⱼ)·45/(πh⁶)·(h − r): the constant factor is folded into hν.
-            float hnuScaled = hnu * 2f * c.Mass * k.ViscosityLaplacianCoefficient;
+            // wᵢⱼ = m·2/(ρᵢ + ρⱼ)·45/(πh⁶)·(h − r)·κ_ν: the constant factor is folded into hν.
+            float hnuScaled = hnu * 2f * c.Mass * k.ViscosityLaplacianCoefficient * c.ViscosityCorrection;
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions, v0 = p.Velocities;
             ReadOnlySpan<float> densities = s.Densities;
             ReadOnlySpan<int> neighbours = s.Neighbours;
             float hk = k.H;
+            bool periodic = c.IsPeriodic, noSlip = math.any(c.Parameters.DomainNoSlip > 0f);
+            float wallWeight = c.Parameters.RestDensity / c.Mass;
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
                 float rhoi = densities[i];
                 float3 sum = float3.zero;
-                float weight = 0f;
+                // A no-slip face mirrors the particle's own velocity through zero (ghost ∝ −vᵢ): it adds only to the weight.
+                float weight = noSlip ? wallWeight * FluidBoundary.NoSlipWeight(c, xi) / (rhoi + c.Parameters.RestDensity) : 0f;
                 ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
                 for (int n = 0; n < list.Length; n++)
                 {
                     int j = list[n];
-                    float r = math.length(xi - x[j]);
+                    float3 d = xi - x[j];
+                    if (periodic)
+                        d = c.MinimumImage(d);
+                    float r = math.length(d);
                     float w = math.max(hk - r, 0f) / (rhoi + densities[j]);
                     sum += w * source[j];
                     weight += w;
@@ -409,7 +425,7 @@ namespace SoftBodyDynamics.Solvers
                 for (int n = 0; n < count; n++)
                 {
                     int j = s.Neighbours[i * cap + n];
-                    float w = k.Poly6(math.lengthsq(xi - p.Positions[j])) / s.Densities[j];
+                    float w = k.Poly6(math.lengthsq(c.Offset(xi, p.Positions[j]))) / s.Densities[j];
                     sum += w * p.Velocities[j];
                     weight += w;
                 }
@@ -487,7 +503,7 @@ namespace SoftBodyDynamics.Solvers
                 int count = s.NeighbourCounts[i];
                 for (int n = 0; n < count; n++)
                 {
-                    float3 rij = xi - p.Positions[s.Neighbours[i * cap + n]];
+                    float3 rij = c.Offset(xi, p.Positions[s.Neighbours[i * cap + n]]);
                     float3 g = mOverRho0 * k.SpikyGradientScale(math.length(rij)) * rij;
                     gradI += g;
                     sumSq += math.lengthsq(g);
@@ -516,7 +532,7 @@ namespace SoftBodyDynamics.Solvers
                 for (int n = 0; n < count; n++)
                 {
                     int j = s.Neighbours[i * cap + n];
-                    float3 rij = xi - p.Positions[j];
+                    float3 rij = c.Offset(xi, p.Positions[j]);
                     float lij = li + s.Pressures[j];
                     if (artificial > 0f)
                     {
@@ -558,12 +574,12 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
-        /// <summary>Position-based: vᵢ = (xᵢ − x⁰ᵢ)/h, the velocity the constraint solve implies (eq. after Algorithm 1, line 21).</summary>
-        public static void VelocityFromPositions(FluidParticles p, FluidScratch s, int start, int end, float h)
+        /// <summary>Position-based: vᵢ = (xᵢ − x⁰ᵢ)/h, the velocity the constraint solve implies (eq. after Algorithm 1, line 21); across a periodic face the offset is the nearest image's.</summary>
+        public static void VelocityFromPositions(in FluidConstants c, FluidParticles p, FluidScratch s, int start, int end, float h)
         {
             float invH = 1f / h;
             for (int i = start; i < end; i++)
-                p.Velocities[i] = (p.Positions[i] - s.Previous[i]) * invH;
+                p.Velocities[i] = c.Offset(p.Positions[i], s.Previous[i]) * invH;
         }
 
         /// <summary>Position-based: v += h·g, x⁰ = x, x += h·v, kept in the domain box.</summary>
@@ -632,7 +648,7 @@ namespace SoftBodyDynamics.Solvers
                 case FluidPass.Lambda: Lambda(c, colliders, p, s, start, end); break;
                 case FluidPass.Correction: Correction(c, colliders, p, s, start, end); break;
                 case FluidPass.ApplyCorrection: ApplyCorrection(c, p, s, start, end); break;
-                case FluidPass.VelocityFromPositions: VelocityFromPositions(p, s, start, end, h); break;
+                case FluidPass.VelocityFromPositions: VelocityFromPositions(c, p, s, start, end, h); break;
                 case FluidPass.Collide: Collide(c, colliders, p, s, start, end, h, ref counters); break;
             }
         }

@@ -131,26 +131,34 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
-        public void DeepColumnAtDefaults_StopsBreathingWithin3Seconds()
+        public void DeepColumnAtDefaults_RestsOverItsFourthSecond()
         {
             // 0.12 × 0.4 × 0.12 m released on a lattice at ρ₀ (720 particles, defaults: c₀ = 10 m/s, Δx = 2 cm). Gravity
             // compresses it by gH/c₀² ≈ 4 % at the floor, which starts the vertical acoustic mode (period 4H/c₀ = 0.16 s);
             // a shear viscosity of α·h·c₀/10 damps that mode at νk² ≈ 0.03/s, so only the bulk viscosity can bring the
-            // kinetic energy under 1e-5 J/kg (the column's g·Δx·1e-4 J/kg, 0.4 mm/s RMS) within 3 s.
+            // kinetic energy under 1e-5 J/kg (the column's g·Δx·1e-4 J/kg, 0.4 mm/s RMS): without it 2.8e-3 J/kg at 3 s. What
+            // is left at 3 s is the particles' last rearrangement, 0.6–26·10⁻⁶ J/kg at one instant as the viscosity changes
+            // by 2 %, so the mean over the fourth second (five samples) is what is pinned.
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.12f, 0.6f, 0.12f));
             Assert.That(p.SpeedOfSound, Is.EqualTo(FluidParameters.Default.SpeedOfSound));
             Assert.That(p.BulkViscosity, Is.EqualTo(FluidParameters.Default.BulkViscosity));
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 720, float3.zero, new float3(0.12f, 0.4f, 0.12f));
             Assert.AreEqual(720, b.Status.Count);
-            for (int f = 0; f < 180; f++)
+            double mean = 0;
+            for (int f = 1; f <= 240; f++)
+            {
                 FluidTestScenes.Step(c, b, 1f / 60f);
-            double ke = 0;
-            for (int i = 0; i < b.Status.Count; i++)
-                ke += 0.5 * math.lengthsq(b.Velocities[i]);
-            ke /= b.Status.Count;
-            TestContext.WriteLine($"kinetic energy after 3 s: {ke:E2} J/kg");
-            Assert.That(ke, Is.LessThan(1e-5));
+                if (f < 180 || f % 15 != 0)
+                    continue;
+                double ke = 0;
+                for (int i = 0; i < b.Status.Count; i++)
+                    ke += 0.5 * math.lengthsq(b.Velocities[i]);
+                ke /= b.Status.Count;
+                TestContext.WriteLine($"kinetic energy at {f / 60.0:0.00} s: {ke:E2} J/kg");
+                mean += ke / 5;
+            }
+            Assert.That(mean, Is.LessThan(1e-5));
         }
 
         /// <summary>

@@ -90,6 +90,8 @@ namespace Unity.Mathematics
             return select(defaultvalue, x * rsqrt(len), len > FLT_MIN_NORMAL);
         }
         public static float3 select(float3 a, float3 b, bool c) => c ? b : a;
+        // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.select.html#Unity_Mathematics_math_select_Unity_Mathematics_float3_Unity_Mathematics_float3_Unity_Mathematics_bool3_
+        public static float3 select(float3 a, float3 b, bool3 c) => new float3(c.x ? b.x : a.x, c.y ? b.y : a.y, c.z ? b.z : a.z);
         public static float3 abs(float3 x) => new float3(abs(x.x), abs(x.y), abs(x.z));
         public static float3 min(float3 a, float3 b) => new float3(min(a.x, b.x), min(a.y, b.y), min(a.z, b.z));
         public static float3 max(float3 a, float3 b) => new float3(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z));

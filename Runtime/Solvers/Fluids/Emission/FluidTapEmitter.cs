@@ -165,8 +165,13 @@ namespace SoftBodyDynamics.Solvers
             NeighbourRows rows = NeighbourRows.Find(c.Grid, s.CellStart, x);
             for (int r = 0; r < rows.Count; r++)
                 for (int j = rows.Begin(r); j < rows.End(r); j++)
-                    if (math.lengthsq(p.Positions[j] - x) < minDistance2)
+                {
+                    float3 d = p.Positions[j] - x;
+                    if (c.IsPeriodic)
+                        d = c.MinimumImage(d);
+                    if (math.lengthsq(d) < minDistance2)
                         return true;
+                }
             return false;
         }
 

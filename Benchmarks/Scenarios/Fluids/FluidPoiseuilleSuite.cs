@@ -1,0 +1,115 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+using SoftBodyDynamics.Solvers;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Fluid accuracy against an analytic solution that converges: plane Poiseuille flow (<see cref="PoiseuilleScenario"/>)
+    /// at a resolution sweep, its profile error against µs per 1/60 s frame of the whole scene, with the observed order.
+    /// </summary>
+    public sealed class FluidPoiseuilleSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteIndependent
+    {
+        /// <summary>Particle layers across the channel in the full run; the default run stops at <see cref="StandardFinestLayers"/>.</summary>
+        public static readonly int[] Layers = { 5, 10, 20, 40 };
+        /// <summary>Finest resolution of the default run (W/10: 2.5 s of setup here).</summary>
+        public const int StandardFinestLayers = 10;
+        /// <summary>
+        /// Viscosity iterations of the converged rows: the cap, which leaves (a/(1 + a))⁵⁰ ≤ 10⁻⁵ of the implicit solve's
+        /// steady-state residual at the sweep's largest a = 15·hν/(4Δx²) ≈ 8 (W/40).
+        /// </summary>
+        public const int ConvergedIterations = FluidParameters.MaxViscosityIterations;
+
+        public string Name => "FluidAccuracyPoiseuille";
+
+        public SuiteDefinition Definition => new SuiteDefinition
+        {
+            Purpose = "Whether the fluid's viscosity, no-slip faces and periodic axes converge to an analytic flow as resolution is bought, and what each resolution costs per frame.",
+            Body = $"Plane Poiseuille flow: a channel W = {PoiseuilleScenario.Width} m between two no-slip faces (y), periodic along x and z over " +
+                   $"{PoiseuilleScenario.PeriodicLayers}Δx, filled with a lattice at rest, Δx = W/{string.Join(", W/", Layers)} (h = 2Δx).",
+            Material = $"ν = {PoiseuilleScenario.Viscosity} m²/s (the honey preset), ρ₀ = 1000 kg/m³, WCSPH c₀ = 10·u_max = {10 * PoiseuilleScenario.PeakSpeed:0.#} m/s, " +
+                       $"α = {FluidParameters.Default.ArtificialViscosity}; viscosity iterations {ConvergedIterations} (converged) and {FluidParameters.Default.ViscosityIterations} (the default).",
+            Load = $"Body force f = 8νu_max/W² = {PoiseuilleScenario.BodyForce:0.###} m/s² along x for u_max = {PoiseuilleScenario.PeakSpeed} m/s; " +
+                   $"{PoiseuilleScenario.SettleSeconds} s in 1/60 s frames (eleven e-folding times of the slowest transient), then measured.",
+            Reference = "Analytic steady profile u(y) = f/(2ν)·y(W − y).",
+            Metric = "Profile error = RMS over layers Δx thick of the layer's mean u_x against u(mean y), over u_max; mean flow error = |ū/(2u_max/3) − 1|; " +
+                     "cross flow = mean |(u_y, u_z)| over u_max. One item is one particle-substep; a step is one 1/60 s frame.",
+            Notes = new[]
+            {
+                $"Observed order = log(e₁/e₂)/log(Δx₁/Δx₂) between neighbouring resolutions of a series. Default run: W/{Layers[0]} and W/{StandardFinestLayers} " +
+                $"converged, W/{Layers[0]}…W/20 at the default iterations; full run: every resolution.",
+                "The default iterations leave the implicit viscosity unconverged once a = 15·hν/(4Δx²) passes about 0.5: the steady flow then runs too fast, more so at finer resolution (fluids.md).",
+            },
+            Details = "fluids.md#poiseuille-flow",
+        };
+
+        public string ErrorMetricForPlot => "profile RMS error";
+
+        public IEnumerable<IScenario> Scenarios(RunScope scope)
+        {
+            bool full = scope == RunScope.Full, quick = scope == RunScope.Quick;
+            foreach (int layers in Layers)
+                if (full || layers <= (quick ? Layers[0] : StandardFinestLayers))
+                    yield return new PoiseuilleScenario(layers, Fluid(ConvergedIterations), $"{ConvergedIterations} viscosity it");
+            if (quick)
+                yield break;
+            foreach (int layers in Layers)
+                if (full || layers <= 20)
+                    yield return new PoiseuilleScenario(layers, Fluid(FluidParameters.Default.ViscosityIterations),
+                        $"{FluidParameters.Default.ViscosityIterations} viscosity it (default)");
+        }
+
+        static FluidParameters Fluid(int viscosityIterations)
+        {
+            FluidParameters p = FluidParameters.Default;
+            p.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
+            p.ViscosityIterations = viscosityIterations;
+            return p;
+        }
+
+        public string Series(ScenarioOutcome row)
+        {
+            int comma = row.Method.LastIndexOf(',');
+            return comma > 0 ? row.Method.Substring(0, comma) : row.Method;
+        }
+
+        public string PointLabel(ScenarioOutcome row)
+        {
+            int comma = row.Method.LastIndexOf(',');
+            return comma > 0 ? row.Method.Substring(comma + 1).Trim() : "";
+        }
+
+        public string CostLabel => "µs per 1/60 s frame (whole scene, all substeps), median";
+
+        public double Cost(ScenarioOutcome row) => row.NsPerItem * row.ItemsPerStep * 1e-3;
+
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
+        {
+            var md = new StringBuilder();
+            md.AppendLine("| series | resolution | particles | µs/frame | profile error | mean flow error | observed order |");
+            md.AppendLine("|---|---|---:|---:|---:|---:|---:|");
+            ScenarioOutcome previous = default;
+            bool havePrevious = false;
+            foreach (ScenarioOutcome r in rows)
+            {
+                double error = r.Value("profile RMS error");
+                string order = "";
+                if (havePrevious && Series(previous) == Series(r))
+                {
+                    double e0 = previous.Value("profile RMS error"), d0 = previous.Value("spacing"), d1 = r.Value("spacing");
+                    if (e0 > 0 && error > 0 && d0 > d1)
+                        order = F("{0:0.00}", Math.Log(e0 / error) / Math.Log(d0 / d1));
+                }
+                md.AppendLine(F("| {0} | {1} | {2} | {3:0} | {4:0.00} % | {5:0.00} % | {6} |", Series(r), PointLabel(r), r.Size,
+                    Cost(r), 100 * error, 100 * r.Value("mean flow error"), order));
+                previous = r;
+                havePrevious = true;
+            }
+            return md.ToString();
+        }
+
+        static string F(string format, params object[] args) => string.Format(CultureInfo.InvariantCulture, format, args);
+    }
+}

@@ -1,0 +1,159 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Plane Poiseuille flow: a channel <see cref="Width"/> wide between two no-slip faces (y = 0 and y = W,
+    /// <see cref="FluidParameters.DomainNoSlip"/>), periodic along x (the flow) and z, filled with a lattice of the fluid at rest
+    /// and driven by a body force f along x. The steady profile is u(y) = f/(2ν)·y(W − y), peak u_max = fW²/(8ν) at the
+    /// centre line; the slowest transient decays as e^(−π²νt/W²). Setup runs <see cref="SettleSeconds"/> in 1/60 s frames and
+    /// measures the mean profile's error (the RMS over layers Δx thick of the layer's mean u_x against u at its mean y, as
+    /// a fraction of u_max), the particles' scatter about u(y), the mean flow against 2/3·u_max and the cross flow. Each timed Step is one more 1/60 s frame; an item is one particle-substep.
+    /// </summary>
+    public sealed class PoiseuilleScenario : IScenario
+    {
+        /// <summary>Channel width W between the no-slip faces (m).</summary>
+        public const float Width = 0.1f;
+        /// <summary>Kinematic viscosity ν (m²/s): the honey preset's.</summary>
+        public static float Viscosity => FluidPresets.Get(FluidPresetKind.Honey).Parameters.Viscosity;
+        /// <summary>Peak speed u_max of the steady profile (m/s); the body force is f = 8νu_max/W².</summary>
+        public const float PeakSpeed = 0.1f;
+        /// <summary>
+        /// Seconds before the measurement: eleven e-folding times W²/(π²ν) of the slowest transient (0.145 s), which then
+        /// leaves 2·10⁻⁵ of u_max.
+        /// </summary>
+        public const float SettleSeconds = 1.6f;
+        /// <summary>Periodic lengths along x and z in spacings: four kernel radii at h = 2Δx (at least 3h, <see cref="FluidParameters.MinPeriodicExtentRatio"/>).</summary>
+        public const int PeriodicLayers = 8;
+        const float k_Frame = 1f / 60f;
+
+        readonly int m_Layers;
+        readonly float m_Settle;
+        readonly FluidParameters m_Parameters;
+        readonly string m_Setting;
+        FluidConstants m_Constants;
+        FluidBuffers m_Buffers;
+        long m_Items;
+        int m_Initial;
+        double m_ProfileError, m_Scatter, m_FlowError, m_CrossFlow, m_DensityError;
+
+        /// <param name="layers">Particle layers across the channel (Δx = W / layers).</param>
+        /// <param name="parameters">The fluid; spacing, domain, gravity, faces and viscosity are set by the scene.</param>
+        /// <param name="setting">The row's label.</param>
+        /// <param name="settleSeconds">Seconds before the measurement (default <see cref="SettleSeconds"/>).</param>
+        public PoiseuilleScenario(int layers, FluidParameters parameters, string setting, float settleSeconds = SettleSeconds)
+        {
+            m_Settle = settleSeconds;
+            m_Layers = layers;
+            m_Parameters = parameters;
+            m_Setting = setting;
+        }
+
+        public string Name => "Poiseuille";
+        public string Method => $"{DamBreakScenario.SolverName(m_Parameters.Solver)} {m_Setting}, W/{m_Layers}";
+        public int Size => PeriodicLayers * PeriodicLayers * m_Layers;
+        public string SizeUnit => "particles";
+        public long ItemsPerStep => Math.Max(1, m_Items);
+
+        /// <summary>Body force f (m/s²) that drives the peak speed <see cref="PeakSpeed"/>.</summary>
+        public static float BodyForce => 8f * Viscosity * PeakSpeed / (Width * Width);
+
+        /// <summary>The analytic steady speed u(y) = f/(2ν)·y(W − y) (m/s).</summary>
+        public static double Analytic(double y) => BodyForce / (2.0 * Viscosity) * y * (Width - y);
+
+        /// <summary>The scene's fluid: <paramref name="parameters"/> at Δx = W/<paramref name="layers"/> in the periodic channel.</summary>
+        public static FluidParameters Channel(FluidParameters parameters, int layers)
+        {
+            float dx = Width / layers;
+            parameters.ParticleSpacing = dx;
+            parameters.KernelRadiusRatio = 2f;
+            parameters.DomainMin = float3.zero;
+            parameters.DomainMax = new float3(PeriodicLayers * dx, Width, PeriodicLayers * dx);
+            parameters.Periodic = new bool3(true, false, true);
+            parameters.DomainNoSlip = new float3(0f, 1f, 0f);
+            parameters.Gravity = new float3(BodyForce, 0f, 0f);
+            parameters.Viscosity = Viscosity;
+            return parameters;
+        }
+
+        public void Setup()
+        {
+            FluidParameters p = Channel(m_Parameters, m_Layers);
+            m_Constants = new FluidConstants(p);
+            m_Buffers = new FluidBuffers(Size, m_Constants.Grid);
+            FluidScene.FillBlock(m_Buffers, p.DomainMin, p.DomainMax, p.ParticleSpacing);
+            m_Initial = m_Buffers.Status.Count;
+            int frames = (int)Math.Round(m_Settle / k_Frame);
+            for (int f = 0; f < frames; f++)
+                Frame();
+            Measure();
+        }
+
+        FluidStepReport Frame()
+        {
+            FluidBuffers b = m_Buffers;
+            FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
+            m_Items = (long)r.Substeps * r.Count;
+            return r;
+        }
+
+        void Measure()
+        {
+            FluidBuffers b = m_Buffers;
+            int n = b.Status.Count;
+            double scatter = 0, flow = 0, cross = 0, density = 0, rho0 = m_Constants.Parameters.RestDensity;
+            // The mean profile: u_x and y averaged over each layer Δx thick across the channel.
+            var sumU = new double[m_Layers];
+            var sumY = new double[m_Layers];
+            var count = new int[m_Layers];
+            for (int i = 0; i < n; i++)
+            {
+                float3 x = b.Positions[i], v = b.Velocities[i];
+                double d = v.x - Analytic(x.y);
+                scatter += d * d;
+                flow += v.x;
+                cross += math.sqrt(v.y * v.y + v.z * v.z);
+                density += Math.Abs(b.Densities[i] / rho0 - 1);
+                int layer = Math.Clamp((int)(x.y / Width * m_Layers), 0, m_Layers - 1);
+                sumU[layer] += v.x;
+                sumY[layer] += x.y;
+                count[layer]++;
+            }
+            double profile = 0;
+            int layers = 0;
+            for (int k = 0; k < m_Layers; k++)
+            {
+                if (count[k] == 0)
+                    continue;
+                double d = sumU[k] / count[k] - Analytic(sumY[k] / count[k]);
+                profile += d * d;
+                layers++;
+            }
+            n = Math.Max(1, n);
+            m_ProfileError = Math.Sqrt(profile / Math.Max(1, layers)) / PeakSpeed;
+            m_Scatter = Math.Sqrt(scatter / n) / PeakSpeed;
+            m_FlowError = Math.Abs(flow / n / (2.0 / 3.0 * PeakSpeed) - 1);
+            m_CrossFlow = cross / n / PeakSpeed;
+            m_DensityError = density / n;
+        }
+
+        /// <summary>RMS over the layers Δx thick of the mean u_x − u(mean y), as a fraction of u_max (after Setup).</summary>
+        public double ProfileError => m_ProfileError;
+
+        public void Step() => Frame();
+
+        public IReadOnlyList<Metric> Evaluate() => new[]
+        {
+            new Metric("profile RMS error", m_ProfileError, MetricUnit.Fraction),
+            new Metric("particle scatter", m_Scatter, MetricUnit.Fraction),
+            new Metric("mean flow error", m_FlowError, MetricUnit.Fraction),
+            new Metric("cross flow", m_CrossFlow, MetricUnit.Fraction),
+            new Metric("density error", m_DensityError, MetricUnit.Fraction),
+            new Metric("spacing", 1000.0 * Width / m_Layers, MetricUnit.Millimetre),
+            new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
+        };
+    }
+}

@@ -1,0 +1,225 @@
+using System;
+using NUnit.Framework;
+using SoftBodyDynamics.Benchmarks.Scenarios;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Tests.Solvers
+{
+    /// <summary>Periodic axes, no-slip faces and the viscosity operator they rely on.</summary>
+    public class FluidBoundaryModelTests
+    {
+        static FluidConstants Periodic(bool3 periodic, float3 max)
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, max);
+            p.Periodic = periodic;
+            return new FluidConstants(p);
+        }
+
+        static FluidBuffers Random(in FluidConstants c, int count, uint seed)
+        {
+            var b = new FluidBuffers(count, c.Grid);
+            var random = new Unity.Mathematics.Random(seed);
+            float3 lo = c.Parameters.DomainMin, hi = c.Parameters.DomainMax;
+            for (int i = 0; i < count; i++)
+            {
+                b.Positions[i] = lo + random.NextFloat3() * (hi - lo);
+                b.Ids[i] = i;
+            }
+            b.Status.Count = count;
+            return b;
+        }
+
+        [TestCase(true, false, false)]
+        [TestCase(false, true, true)]
+        [TestCase(true, true, true)]
+        public void PeriodicNeighbours_AreExactlyTheNearestImagesWithinH(bool px, bool py, bool pz)
+        {
+            // Extents that are not whole cells (h/2 = 2 cm), so the last cell of each axis is partial.
+            FluidConstants c = Periodic(new bool3(px, py, pz), new float3(0.137f, 0.151f, 0.129f));
+            Assert.IsTrue(c.IsPeriodic);
+            FluidBuffers b = Random(c, 300, 7);
+            var counters = new FluidPassCounters();
+            int live = FluidSolver.SortParticles(c, b.Particles, b.Scratch, 300, false, ref counters);
+            FluidPasses.Density(c, default, b.Particles, b.Scratch, 0, live, ref counters);
+            Assert.AreEqual(0, counters.NeighbourOverflow);
+            float h2 = c.Kernels.H2;
+            float3 extent = c.Parameters.DomainMax - c.Parameters.DomainMin;
+            for (int i = 0; i < live; i++)
+            {
+                int brute = 0;
+                for (int j = 0; j < live; j++)
+                {
+                    float3 d = b.Positions[i] - b.Positions[j];
+                    // Every image within one period, in double: the nearest is the one that counts.
+                    double best = double.MaxValue;
+                    for (int ix = px ? -1 : 0; ix <= (px ? 1 : 0); ix++)
+                    for (int iy = py ? -1 : 0; iy <= (py ? 1 : 0); iy++)
+                    for (int iz = pz ? -1 : 0; iz <= (pz ? 1 : 0); iz++)
+                    {
+                        double dx = d.x + ix * extent.x, dy = d.y + iy * extent.y, dz = d.z + iz * extent.z;
+                        best = Math.Min(best, dx * dx + dy * dy + dz * dz);
+                    }
+                    if (j != i && best < h2)
+                        brute++;
+                }
+                Assert.AreEqual(brute, b.NeighbourCounts[i], $"particle {i} at {b.Positions[i]}");
+            }
+        }
+
+        [Test]
+        public void PeriodicAxis_ShorterThanThreeKernelRadii_IsNotPeriodic()
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.11f, 0.2f, 0.2f));
+            p.Periodic = new bool3(true, false, false);
+            Assert.IsFalse(new FluidConstants(p).IsPeriodic, "0.11 m < 3h = 0.12 m");
+            p.DomainMax.x = 0.12f;
+            Assert.IsTrue(new FluidConstants(p).IsPeriodic);
+        }
+
+        [TestCase(FluidSolverKind.WeaklyCompressible)]
+        [TestCase(FluidSolverKind.PositionBased)]
+        public void ParticleThroughAPeriodicFace_EntersOppositeWithItsVelocity(FluidSolverKind solver)
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.2f, 0.2f));
+            p.Solver = solver;
+            p.Gravity = float3.zero;
+            p.Periodic = new bool3(true, false, false);
+            var c = new FluidConstants(p);
+            var b = new FluidBuffers(1, c.Grid);
+            b.Positions[0] = new float3(0.195f, 0.1f, 0.1f);
+            b.Velocities[0] = new float3(1f, 0f, 0f);
+            b.Status.Count = 1;
+            FluidTestScenes.Step(c, b, 1f / 60f);
+            // A lone particle coasts: 1/60 m along x, wrapped by one period (float32 round-off of positions near 0.2 m).
+            Assert.AreEqual(0.195f + 1f / 60f - 0.2f, b.Positions[0].x, 1e-5f);
+            Assert.AreEqual(1f, b.Velocities[0].x, 1e-4f, "the position-based velocity is the motion, not the jump across the box");
+        }
+
+        [Test]
+        public void NoSlipWallIntegral_IsTheMirroredKernelLaplacianOverTheHalfSpace()
+        {
+            // ∫ (h − r)·(1 + t/d) dV over z > d by slab quadrature in double: slab z has the disc integral
+            // 2π(h³/6 − hz²/2 + z³/3) of (h − r); midpoint rule with 20000 slabs, relative error ~1e-9.
+            var k = new SphKernels(0.04f);
+            double h = k.H;
+            foreach (double d in new[] { 0.005, 0.01, 0.02, 0.035 })
+            {
+                int n = 20000;
+                double sum = 0, dz = (h - d) / n;
+                for (int s = 0; s < n; s++)
+                {
+                    double z = d + (s + 0.5) * dz;
+                    double disc = 2 * Math.PI * (h * h * h / 6 - h * z * z / 2 + z * z * z / 3);
+                    sum += disc * (1 + (z - d) / d) * dz;
+                }
+                Assert.AreEqual(sum, k.NoSlipWallIntegral((float)d), 1e-5 * sum, $"d = {d}");
+            }
+            Assert.AreEqual(0f, k.NoSlipWallIntegral(0.04f));
+        }
+
+        [Test]
+        public void ViscosityOnTheRestLattice_DifferentiatesAQuadraticFieldExactly()
+        {
+            // v = (y², 0, 0) has ∇²v = (2, 0, 0), and a Jacobi iteration from v gives vᵢ + hν·(∇²v)ᵢ/(1 + aᵢ), aᵢ = hν·Σw the
+            // particle's own weight. aᵢ is read from the same pass on v⁰ = 0 with neighbours at 1 (it returns aᵢ/(1 + aᵢ)). On the rest
+            // lattice the odd terms cancel and the lattice-corrected operator (κ_ν) sums Σw·Δy² to exactly 2: float32 round-off
+            // of ~250-term sums and of the ~4e-4 velocities leaves 1e-3 of the 2e-6 increment.
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.3f, 0.3f, 0.3f));
+            p.Viscosity = 1e-3f;
+            p.Gravity = float3.zero;
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 4000, float3.zero, new float3(0.3f, 0.3f, 0.3f));
+            var counters = new FluidPassCounters();
+            int live = FluidSolver.SortParticles(c, b.Particles, b.Scratch, b.Status.Count, false, ref counters);
+            FluidPasses.Density(c, default, b.Particles, b.Scratch, 0, live, ref counters);
+            const float step = 1e-3f;
+            var weight = new float[live];
+            for (int i = 0; i < live; i++)
+            {
+                b.Velocities[i] = float3.zero;
+                b.Scratch.VectorsA[i] = new float3(1f, 0f, 0f);
+            }
+            FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
+            for (int i = 0; i < live; i++)
+                weight[i] = b.Scratch.VectorsB[i].x / (1f - b.Scratch.VectorsB[i].x);
+            for (int i = 0; i < live; i++)
+            {
+                float y = b.Positions[i].y - 0.15f;
+                b.Velocities[i] = new float3(y * y, 0f, 0f);
+                b.Scratch.VectorsA[i] = b.Velocities[i];
+            }
+            FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
+            int checkedCount = 0;
+            double expected = 2.0 * step * p.Viscosity;
+            for (int i = 0; i < live; i++)
+            {
+                float3 x = b.Positions[i];
+                if (math.any(math.abs(x - 0.15f) > 0.02f))
+                    continue;
+                checkedCount++;
+                double increment = (double)b.Scratch.VectorsB[i].x - b.Velocities[i].x;
+                Assert.AreEqual(expected, increment * (1 + weight[i]), 1e-3 * expected, $"particle at {x}");
+            }
+            Assert.Greater(checkedCount, 0);
+        }
+
+        [Test]
+        public void PoiseuilleFlow_ConvergedViscosity_ConvergesToTheAnalyticProfile()
+        {
+            // With the viscosity solve converged the profile error falls at least first order from W/5 to W/10 and reaches the
+            // 1 % of u_max the package promises for a bought resolution (a fluid at rest in a free-slip channel would be 67 %).
+            FluidParameters p = FluidParameters.Default;
+            p.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
+            p.ViscosityIterations = FluidParameters.MaxViscosityIterations;
+            var coarse = new PoiseuilleScenario(5, p, "test");
+            var fine = new PoiseuilleScenario(10, p, "test");
+            coarse.Setup();
+            fine.Setup();
+            Assert.Less(fine.ProfileError, 0.5 * coarse.ProfileError, "first order or better");
+            Assert.Less(fine.ProfileError, 0.01);
+        }
+
+        [Test]
+        public void PeriodicAxesAndNoSlipFaces_KeepAGpuFluidOnTheCpu()
+        {
+            FluidParameters p = FluidParameters.Default;
+            Assert.IsNull(FluidBackendChoice.UnsupportedOnGpu(p));
+            p.Periodic = new bool3(false, false, true);
+            StringAssert.Contains("periodic", FluidBackendChoice.UnsupportedOnGpu(p));
+            p = FluidParameters.Default;
+            p.DomainNoSlip = new float3(0f, 1f, 0f);
+            StringAssert.Contains("no-slip", FluidBackendChoice.UnsupportedOnGpu(p));
+            p.ViscosityIterations = 0;
+            Assert.IsNull(FluidBackendChoice.UnsupportedOnGpu(p), "no viscosity pass, so the faces change nothing");
+        }
+
+        [Test]
+        public void ShortPeriodicAxisAndUnconvergedViscosity_AreBakeWarnings()
+        {
+            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.1f, 0.5f, 0.5f));
+            p.Periodic = new bool3(true, false, false);
+            Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
+            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidPeriodicAxisTooShort));
+
+            // The Poiseuille channel at W/20 (c₀ = 1 m/s, honey): a = 15·hν/h² ≈ 3.7 at its substep, 30 iterations for 1 %.
+            issues.Clear();
+            FluidParameters q = FluidParameters.Default;
+            q.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
+            q = PoiseuilleScenario.Channel(q, 20);
+            Assert.IsTrue(FluidValidation.Validate(q, 10000, issues));
+            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved));
+            issues.Clear();
+            q.ViscosityIterations = FluidParameters.MaxViscosityIterations;
+            Assert.IsTrue(FluidValidation.Validate(q, 10000, issues));
+            Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved));
+            foreach (FluidPresetKind kind in new[] { FluidPresetKind.Water, FluidPresetKind.Honey, FluidPresetKind.Oil, FluidPresetKind.Slime, FluidPresetKind.Lava })
+            {
+                issues.Clear();
+                Assert.IsTrue(FluidValidation.Validate(FluidPresets.Get(kind).Parameters, 1000, issues));
+                Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved), $"{kind} at its defaults");
+            }
+        }
+    }
+}
