@@ -166,17 +166,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Akinci γ of the droplet rows.</summary>
         public static readonly float[] AkinciTensions = { 0.05f, 0.2f };
 
-        public string Series(ScenarioOutcome row)
-        {
-            int comma = row.Method.LastIndexOf(',');
-            return comma > 0 ? row.Method.Substring(0, comma) : row.Method;
-        }
+        public string Series(ScenarioOutcome row) => FluidScene.SeriesOf(row.Method);
 
-        public string PointLabel(ScenarioOutcome row)
-        {
-            int comma = row.Method.LastIndexOf(',');
-            return comma > 0 ? row.Method.Substring(comma + 1).Trim() : "";
-        }
+        public string PointLabel(ScenarioOutcome row) => FluidScene.PointOf(row.Method);
 
         public string CostLabel => "ms per 1/60 s of simulated flow (whole scene, all substeps), median";
 

@@ -69,17 +69,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return p;
         }
 
-        public string Series(ScenarioOutcome row)
-        {
-            int comma = row.Method.LastIndexOf(',');
-            return comma > 0 ? row.Method.Substring(0, comma) : row.Method;
-        }
+        public string Series(ScenarioOutcome row) => FluidScene.SeriesOf(row.Method);
 
-        public string PointLabel(ScenarioOutcome row)
-        {
-            int comma = row.Method.LastIndexOf(',');
-            return comma > 0 ? row.Method.Substring(comma + 1).Trim() : "";
-        }
+        public string PointLabel(ScenarioOutcome row) => FluidScene.PointOf(row.Method);
 
         public string CostLabel => "µs per 1/60 s frame (whole scene, all substeps), median";
 

@@ -7,6 +7,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>Building blocks of the fluid scenarios: lattice blocks, bulk front, density statistics.</summary>
     public static class FluidScene
     {
+        /// <summary>A figure's series of a row's method: the text before its last comma (the whole method without one).</summary>
+        public static string SeriesOf(string method)
+        {
+            int comma = method.LastIndexOf(',');
+            return comma > 0 ? method.Substring(0, comma) : method;
+        }
+
+        /// <summary>A figure's point label of a row's method: the text after its last comma (empty without one).</summary>
+        public static string PointOf(string method)
+        {
+            int comma = method.LastIndexOf(',');
+            return comma > 0 ? method.Substring(comma + 1).Trim() : "";
+        }
+
         /// <summary>Fills the box [<paramref name="lo"/>, <paramref name="hi"/>) with a cubic lattice at the fluid's spacing (first point half a spacing in) and returns the count.</summary>
         public static int FillBlock(FluidBuffers b, float3 lo, float3 hi, float spacing)
         {
