@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Authoring
         [Min(0f)]
         public float viscosity = 1e-6f;
 
-        [Tooltip("Custom material: Jacobi iterations of the implicit viscosity per substep (0 = no viscosity pass). More iterations bring a thick fluid closer to its viscosity.")]
+        [Tooltip("Custom material: Jacobi iterations of the implicit viscosity per substep, at least (0 = no viscosity pass). A substep whose solve would stop short of 1 % of its solution runs more, up to 50.")]
         [Range(0, 50)]
         public int viscosityIterations = 1;
 

@@ -175,7 +175,7 @@ namespace SoftBodyDynamics.Compute
                 FluidSolver.Substeps(m_Constants, math.min(m_LastMaxSpeed, m_Constants.Parameters.MaxSpeed), m_LastDepth, dt));
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
+            int passCount = FluidSubstepPasses.Write(m_Constants, plan.H, m_Colliders > 0, passes);
             FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, plan.SimulatedTime), plan.Substeps,
                 passes.Slice(0, passCount));
             RequestStats();

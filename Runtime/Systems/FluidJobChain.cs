@@ -19,7 +19,7 @@ namespace SoftBodyDynamics
         {
             job.H = plan.H;
             var passes = new NativeArray<FluidPass>(FluidSubstepPasses.MaxPasses, Allocator.Temp);
-            int passCount = FluidSubstepPasses.Write(job.Constants.Parameters, job.Colliders.Length > 0, passes.AsSpan());
+            int passCount = FluidSubstepPasses.Write(job.Constants, plan.H, job.Colliders.Length > 0, passes.AsSpan());
             JobHandle handle = dependsOn;
             for (int k = 0; k < plan.Substeps; k++)
                 for (int q = 0; q < passCount; q++)

@@ -200,7 +200,7 @@ namespace SoftBodyDynamics.Lavapipe
             FluidSolver.Plan plan = FluidSolver.PlanOf(dt, FluidSolver.Substeps(m_Constants, maxSpeed, FluidComputeLayout.DepthOf(m_Constants, Stats), dt));
             FluidComputeStep.RecordBegin(ref self, ConstantsOf(0f, plan.SimulatedTime));
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(m_Constants.Parameters, m_Colliders > 0, passes);
+            int passCount = FluidSubstepPasses.Write(m_Constants, plan.H, m_Colliders > 0, passes);
             FluidComputeStep.RecordSubsteps(ref self, m_Constants, ConstantsOf(plan.H, plan.SimulatedTime), plan.Substeps, passes.Slice(0, passCount));
             Flush();
             return FluidSolver.Finish(plan, Counters(), dt, Count, ref status);

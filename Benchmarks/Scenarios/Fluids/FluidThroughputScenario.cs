@@ -126,7 +126,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             if (m_Row == FluidThroughputRow.Staged)
             {
                 Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-                m_Passes = passes.Slice(0, FluidSubstepPasses.Write(m_Constants.Parameters, false, passes)).ToArray();
+                m_Passes = passes.Slice(0, FluidSubstepPasses.Write(m_Constants, m_Substep, false, passes)).ToArray();
                 m_StageTicks = new long[k_MaxRecorded * s_StageCount];
                 m_SameBits = StagedMatchesSolver() ? 1 : 0;
                 m_Recorded = 0;

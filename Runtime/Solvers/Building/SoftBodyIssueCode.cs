@@ -286,7 +286,7 @@ namespace SoftBodyDynamics.Solvers
         FluidGpuFeatureUnsupported = 240,
         /// <summary>Warning: a periodic axis of the fluid's domain is shorter than three kernel radii, so it is not periodic.</summary>
         FluidPeriodicAxisTooShort = 241,
-        /// <summary>Warning: the fluid's viscosity iterations leave its implicit viscosity unconverged at its substep (a steady flow then runs too fast).</summary>
+        /// <summary>Warning: the fluid's implicit viscosity needs more Jacobi iterations than a substep runs to converge at its substep (a steady flow then runs too fast).</summary>
         FluidViscosityUnresolved = 242,
     }
 }

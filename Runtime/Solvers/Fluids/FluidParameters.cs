@@ -49,7 +49,11 @@ namespace SoftBodyDynamics.Solvers
         public int PressureIterations;
         /// <summary>Kinematic viscosity ν (m²/s): water 1e-6, oil 1e-4, honey 5e-3. Integrated implicitly, so any value is stable.</summary>
         public float Viscosity;
-        /// <summary>Jacobi iterations of the implicit viscosity solve per substep (0–50; 0 = no viscosity pass). Default 4.</summary>
+        /// <summary>
+        /// Jacobi iterations of the implicit viscosity solve per substep, at least (0–50; 0 = no viscosity pass): a substep
+        /// whose solve would stop short of 1 % of its solution runs more, up to 50 (<see cref="FluidSolver.ViscosityIterations"/>).
+        /// Default 4.
+        /// </summary>
         public int ViscosityIterations;
         /// <summary>Cohesion model (<see cref="FluidCohesionModel"/>). Default: none.</summary>
         public FluidCohesionModel Cohesion;

@@ -27,9 +27,15 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Most passes one substep can have.</summary>
         public const int MaxPasses = 16 + 4 * FluidParameters.MaxPressureIterations + FluidParameters.MaxViscosityIterations;
 
-        /// <summary>Writes the passes of one substep of a fluid with (sanitized) parameters <paramref name="p"/> into <paramref name="passes"/>; returns how many.</summary>
-        public static int Write(in FluidParameters p, bool colliders, Span<FluidPass> passes)
+        /// <summary>
+        /// Writes the passes of one substep of <paramref name="h"/> seconds of the fluid <paramref name="c"/> into
+        /// <paramref name="passes"/> (the viscosity iterations follow the substep, <see cref="FluidSolver.ViscosityIterations"/>);
+        /// returns how many.
+        /// </summary>
+        public static int Write(in FluidConstants c, float h, bool colliders, Span<FluidPass> passes)
         {
+            FluidParameters p = c.Parameters;
+            int viscosityIterations = FluidSolver.ViscosityIterations(c, h);
             int n = 0;
             bool akinci = p.Cohesion == FluidCohesionModel.Akinci && p.SurfaceTension > 0f;
             if (p.Solver == FluidSolverKind.WeaklyCompressible)
@@ -40,7 +46,7 @@ namespace SoftBodyDynamics.Solvers
                     passes[n++] = FluidPass.SurfaceNormals;
                 passes[n++] = FluidPass.Forces;
                 passes[n++] = FluidPass.CopyAToVelocities;
-                n = Smooth(p, passes, n);
+                n = Smooth(p, viscosityIterations, passes, n);
                 passes[n++] = FluidPass.Advect;
             }
             else
@@ -63,7 +69,7 @@ namespace SoftBodyDynamics.Solvers
                     passes[n++] = FluidPass.CohesionForces;
                     passes[n++] = FluidPass.CopyAToVelocities;
                 }
-                n = Smooth(p, passes, n);
+                n = Smooth(p, viscosityIterations, passes, n);
             }
             if (colliders)
                 passes[n++] = FluidPass.Collide;
@@ -71,9 +77,8 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Implicit viscosity (Jacobi iterations ping-ponging through the two vector scratch arrays) and alignment.</summary>
-        static int Smooth(in FluidParameters p, Span<FluidPass> passes, int n)
+        static int Smooth(in FluidParameters p, int iterations, Span<FluidPass> passes, int n)
         {
-            int iterations = p.Viscosity > 0f ? p.ViscosityIterations : 0;
             if (iterations > 0)
             {
                 passes[n++] = FluidPass.CopyVelocitiesToA;

@@ -96,6 +96,15 @@ namespace SoftBodyDynamics.Solvers
         public static void Density(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
             int start, int end, ref FluidPassCounters counters)
         {
+            if (c.IsPeriodic)
+                Density(c, colliders, p, s, start, end, ref counters, new NearestImageOffset(c));
+            else
+                Density(c, colliders, p, s, start, end, ref counters, default(DirectOffset));
+        }
+
+        static void Density<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            int start, int end, ref FluidPassCounters counters, TOffset offset) where TOffset : struct, IPairOffset
+        {
             SphKernels k = c.Kernels;
             float rho0 = c.Parameters.RestDensity, h2 = k.H2;
             bool tait = c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
@@ -104,12 +113,10 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
             ReadOnlySpan<int> cellStart = s.CellStart;
             Span<int> neighbours = s.Neighbours;
-            bool periodic = c.IsPeriodic;
-            var rows = new NeighbourRows();
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
-                NeighbourRows.Find(c.Grid, cellStart, xi, ref rows);
+                NeighbourRows rows = NeighbourRows.Find(c.Grid, cellStart, xi);
                 int listStart = i * cap, found = 0;
                 // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once. With bulk viscosity also
                 // Σ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)², the poly6-gradient divergence up to its factor (FluidConstants.BulkPressureScale).
@@ -120,9 +127,7 @@ namespace SoftBodyDynamics.Solvers
                     int rowEnd = rows.End(r);
                     for (int j = rows.Begin(r); j < rowEnd; j++)
                     {
-                        float3 d = xi - x[j];
-                        if (periodic)
-                            d = c.MinimumImage(d);
+                        float3 d = offset.Of(xi, x[j]);
                         float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
                         if (!(q > 0f))
                             continue;
@@ -234,6 +239,15 @@ namespace SoftBodyDynamics.Solvers
         public static void Forces(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
             Span<float3> destination, int start, int end, float h, bool pressureAndGravity)
         {
+            if (c.IsPeriodic)
+                Forces(c, colliders, p, s, destination, start, end, h, pressureAndGravity, new NearestImageOffset(c));
+            else
+                Forces(c, colliders, p, s, destination, start, end, h, pressureAndGravity, default(DirectOffset));
+        }
+
+        static void Forces<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            Span<float3> destination, int start, int end, float h, bool pressureAndGravity, TOffset offset) where TOffset : struct, IPairOffset
+        {
             FluidParameters prm = c.Parameters;
             bool flocking = prm.Cohesion == FluidCohesionModel.Flocking && (prm.CohesionWeight > 0f || prm.SeparationWeight > 0f);
             bool akinci = prm.Cohesion == FluidCohesionModel.Akinci && prm.SurfaceTension > 0f;
@@ -241,11 +255,11 @@ namespace SoftBodyDynamics.Solvers
             {
                 float3 a = float3.zero;
                 if (pressureAndGravity)
-                    a += PressureAcceleration(c, colliders, p, s, i);
+                    a += PressureAcceleration(c, colliders, p, s, i, offset);
                 if (flocking)
-                    AddFlocking(c, p, s, i, ref a);
+                    AddFlocking(c, p, s, i, ref a, offset);
                 if (akinci)
-                    a -= prm.SurfaceTension * AkinciSum(c, p, s, i);
+                    a -= prm.SurfaceTension * AkinciSum(c, p, s, i, offset);
                 destination[i] = p.Velocities[i] + h * a;
             }
         }
@@ -254,7 +268,8 @@ namespace SoftBodyDynamics.Solvers
         /// Weakly compressible part of <see cref="Forces"/> for slot <paramref name="i"/>: gravity, the symmetric pressure term
         /// with artificial viscosity, and the walls' push.
         /// </summary>
-        static float3 PressureAcceleration(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int i)
+        static float3 PressureAcceleration<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int i,
+            TOffset offset) where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
@@ -268,14 +283,11 @@ namespace SoftBodyDynamics.Solvers
             float rhoi = densities[i];
             float3 vi = velocities[i];
             float3 sum = float3.zero;
-            bool periodic = c.IsPeriodic;
             ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
             for (int n = 0; n < list.Length; n++)
             {
                 int j = list[n];
-                float3 rij = xi - x[j];
-                if (periodic)
-                    rij = c.MinimumImage(rij);
+                float3 rij = offset.Of(xi, x[j]);
                 float r2 = math.dot(rij, rij);
                 float r = math.sqrt(r2);
                 float scale = pi + pressures[j];
@@ -298,7 +310,8 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Flocking part of <see cref="Forces"/>: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.</summary>
-        static void AddFlocking(in FluidConstants c, FluidParticles p, FluidScratch s, int i, ref float3 a)
+        static void AddFlocking<TOffset>(in FluidConstants c, FluidParticles p, FluidScratch s, int i, ref float3 a, TOffset offset)
+            where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
@@ -309,7 +322,7 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
             for (int n = 0; n < list.Length; n++)
             {
-                float3 rij = c.Offset(xi, p.Positions[list[n]]);
+                float3 rij = offset.Of(xi, p.Positions[list[n]]);
                 float3 xj = xi - rij;
                 float r2 = math.lengthsq(rij);
                 float w = k.Poly6(r2);
@@ -325,7 +338,8 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Akinci et al. 2013, eqs. 1–5: Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ); the acceleration is −γ times it.</summary>
-        static float3 AkinciSum(in FluidConstants c, FluidParticles p, FluidScratch s, int i)
+        static float3 AkinciSum<TOffset>(in FluidConstants c, FluidParticles p, FluidScratch s, int i, TOffset offset)
+            where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
             float m = c.Mass, rho0 = c.Parameters.RestDensity;
@@ -337,7 +351,7 @@ namespace SoftBodyDynamics.Solvers
             for (int n = 0; n < list.Length; n++)
             {
                 int j = list[n];
-                float3 rij = c.Offset(xi, p.Positions[j]);
+                float3 rij = offset.Of(xi, p.Positions[j]);
                 float r = math.length(rij);
                 if (!(r < k.H))
                     continue;
@@ -373,6 +387,15 @@ namespace SoftBodyDynamics.Solvers
         public static void ViscosityIteration(in FluidConstants c, FluidParticles p, FluidScratch s, ReadOnlySpan<float3> source,
             Span<float3> destination, int start, int end, float h)
         {
+            if (c.IsPeriodic)
+                ViscosityIteration(c, p, s, source, destination, start, end, h, new NearestImageOffset(c));
+            else
+                ViscosityIteration(c, p, s, source, destination, start, end, h, default(DirectOffset));
+        }
+
+        static void ViscosityIteration<TOffset>(in FluidConstants c, FluidParticles p, FluidScratch s, ReadOnlySpan<float3> source,
+            Span<float3> destination, int start, int end, float h, TOffset offset) where TOffset : struct, IPairOffset
+        {
             SphKernels k = c.Kernels;
             float hnu = h * c.Parameters.Viscosity;
             // wᵢⱼ = m·2/(ρᵢ + ρⱼ)·45/(πh⁶)·(h − r)·κ_ν: the constant factor is folded into hν.
@@ -382,7 +405,7 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<float> densities = s.Densities;
             ReadOnlySpan<int> neighbours = s.Neighbours;
             float hk = k.H;
-            bool periodic = c.IsPeriodic, noSlip = math.any(c.Parameters.DomainNoSlip > 0f);
+            bool noSlip = math.any(c.Parameters.DomainNoSlip > 0f);
             float wallWeight = c.Parameters.RestDensity / c.Mass;
             for (int i = start; i < end; i++)
             {
@@ -395,10 +418,7 @@ namespace SoftBodyDynamics.Solvers
                 for (int n = 0; n < list.Length; n++)
                 {
                     int j = list[n];
-                    float3 d = xi - x[j];
-                    if (periodic)
-                        d = c.MinimumImage(d);
-                    float r = math.length(d);
+                    float r = math.length(offset.Of(xi, x[j]));
                     float w = math.max(hk - r, 0f) / (rhoi + densities[j]);
                     sum += w * source[j];
                     weight += w;

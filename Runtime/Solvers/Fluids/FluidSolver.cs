@@ -64,6 +64,39 @@ namespace SoftBodyDynamics.Solvers
             return dx * math.sqrt(PositionBasedDepthTolerance * p.PressureIterations / (PositionBasedDepthErrorFactor * g * depth));
         }
 
+        /// <summary>Share of the implicit viscosity's smooth part a substep's Jacobi iterations may leave (1 %).</summary>
+        public const float ViscosityTolerance = 0.01f;
+
+        /// <summary>
+        /// Jacobi iterations that bring the smooth (steady) part of the implicit viscosity to <see cref="ViscosityTolerance"/>
+        /// of its solution at a substep of <paramref name="h"/> seconds: each iteration removes the share 1/(1 + a) of it,
+        /// a = hν·Σw the solve's diagonal over the rest lattice ≈ 15·hν·κ_ν/h_kernel², so n = ln 0.01 / ln(a/(1 + a)); 1 when a
+        /// is tiny, 10⁶ when it is huge.
+        /// </summary>
+        public static int ViscosityIterationsNeeded(in FluidConstants c, float h)
+        {
+            float kernel = c.Kernels.H;
+            float a = 15f * h * c.Parameters.Viscosity * c.ViscosityCorrection / (kernel * kernel);
+            if (!(a > 0f))
+                return 1;
+            float n = math.log(ViscosityTolerance) / math.log(a / (1f + a));
+            return n < 1e6f ? math.max(1, (int)math.ceil(n)) : 1000000;
+        }
+
+        /// <summary>
+        /// The viscosity iterations a substep of <paramref name="h"/> seconds runs: <see cref="FluidParameters.ViscosityIterations"/>,
+        /// raised up to <see cref="FluidParameters.MaxViscosityIterations"/> when <see cref="ViscosityIterationsNeeded"/> asks for
+        /// more (a truncated solve lets a steady shear flow run faster than the viscosity allows); 0 without viscosity or
+        /// with 0 iterations asked for.
+        /// </summary>
+        public static int ViscosityIterations(in FluidConstants c, float h)
+        {
+            FluidParameters p = c.Parameters;
+            if (!(p.Viscosity > 0f) || p.ViscosityIterations <= 0)
+                return 0;
+            return math.max(p.ViscosityIterations, math.min(ViscosityIterationsNeeded(c, h), FluidParameters.MaxViscosityIterations));
+        }
+
         /// <summary>
         /// Substeps for a step of <paramref name="dt"/> at fastest speed <paramref name="maxSpeed"/> (m/s) of a fluid
         /// <paramref name="depth"/> metres deep along gravity (position-based only: <see cref="DepthSubstep"/>): (wanted, used).
@@ -198,7 +231,7 @@ namespace SoftBodyDynamics.Solvers
             int count = status.Count;
             var counters = new FluidPassCounters();
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(c.Parameters, colliders.Length > 0, passes);
+            int passCount = FluidSubstepPasses.Write(c, plan.H, colliders.Length > 0, passes);
             batches = math.max(1, batches);
             for (int k = 0; k < plan.Substeps; k++)
                 for (int q = 0; q < passCount; q++)

@@ -493,7 +493,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             }
             CollectionAssert.AreEqual(a.Positions, b.Positions);
             var passes = new FluidPass[FluidSubstepPasses.MaxPasses];
-            int n = FluidSubstepPasses.Write(cq.Parameters, false, passes);
+            int n = FluidSubstepPasses.Write(cq, 1f / 600f, false, passes);
             Assert.IsFalse(Array.IndexOf(passes, FluidPass.Alignment, 0, n) >= 0 || Array.IndexOf(passes, FluidPass.SurfaceNormals, 0, n) >= 0);
         }
 

@@ -98,7 +98,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             // The throughput fluid (no cohesion, no colliders) must leave nothing in "other passes".
             FluidParameters p = FluidThroughputScenario.CubeParameters(8).Sanitized();
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int n = FluidSubstepPasses.Write(p, false, passes);
+            var c = new FluidConstants(p);
+            int n = FluidSubstepPasses.Write(c, FluidSolver.CflSubstep(c, 0f, 1f), false, passes);
             FluidStage stage = FluidStage.Other;
             for (int q = 0; q < n; q++)
             {

@@ -39,7 +39,7 @@ static class Program
             float h = 0.9f * FluidSolver.CflSubstep(c, 0f, 1f);
             FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, h, b.Particles, b.Scratch, ref b.Status);
             var buffer = new FluidPass[FluidSubstepPasses.MaxPasses];
-            FluidPass[] passes = buffer.Take(FluidSubstepPasses.Write(c.Parameters, false, buffer)).ToArray();
+            FluidPass[] passes = buffer.Take(FluidSubstepPasses.Write(c, h, false, buffer)).ToArray();
             var cpu = new Dictionary<FluidPass, List<double>>();
             var gpu = new Dictionary<FluidPass, List<double>>();
             foreach (FluidPass pass in passes) { cpu[pass] = new List<double>(); gpu[pass] = new List<double>(); }

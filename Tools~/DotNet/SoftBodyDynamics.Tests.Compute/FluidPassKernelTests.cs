@@ -91,7 +91,7 @@ namespace SoftBodyDynamics.Tests.Compute
             const float dt = 1f / 120f;
             FluidSolver.Plan plan = FluidSolver.Begin(c, dt, cpu.Particles, ref cpu.Status);
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
-            int passCount = FluidSubstepPasses.Write(c.Parameters, colliders.Length > 0, passes);
+            int passCount = FluidSubstepPasses.Write(c, plan.H, colliders.Length > 0, passes);
             using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, capacity);
             g.SetShapes(colliders, ReadOnlySpan<FluidDrain>.Empty);
             var gpu = g;

@@ -43,9 +43,9 @@ namespace SoftBodyDynamics.Solvers
                     issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidPeriodicAxisTooShort, -1, $"A periodic axis is shorter than three kernel radii ({shortest} m; size {extent}), so it is not periodic: lengthen the domain or lower the spacing."));
                 var c = new FluidConstants(p);
                 int2 substeps = FluidSolver.Substeps(c, 0f, 0f, 1f / 60f);
-                int needed = ViscosityIterationsNeeded(c, 1f / 60f / substeps.y);
-                if (needed > c.Parameters.ViscosityIterations && c.Parameters.Viscosity > 0f && c.Parameters.ViscosityIterations > 0)
-                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidViscosityUnresolved, -1, $"At this viscosity, spacing and substep the implicit viscosity needs {needed} iterations to reach 1 % of its solution; with {c.Parameters.ViscosityIterations} a steady flow runs faster than the fluid's viscosity allows. Raise Viscosity Iterations (at most {FluidParameters.MaxViscosityIterations})."));
+                int needed = FluidSolver.ViscosityIterationsNeeded(c, 1f / 60f / substeps.y);
+                if (needed > FluidParameters.MaxViscosityIterations && c.Parameters.Viscosity > 0f && c.Parameters.ViscosityIterations > 0)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidViscosityUnresolved, -1, $"At this viscosity, spacing and substep the implicit viscosity needs {needed} Jacobi iterations to reach 1 % of its solution, more than the {FluidParameters.MaxViscosityIterations} a substep runs: a steady flow will run faster than the fluid's viscosity allows. Raise the spacing or the speed of sound (shorter substeps), or lower the viscosity."));
                 if (substeps.x > substeps.y)
                     issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSubstepCapTooLow, -1, $"At rest the CFL limit already asks for {substeps.x} substeps per 1/60 s frame, above the cap of {substeps.y}: lower the speed of sound or raise the substep cap."));
                 else if (c.Parameters.Solver == FluidSolverKind.PositionBased)
@@ -59,21 +59,6 @@ namespace SoftBodyDynamics.Solvers
                 }
             }
             return !SoftBodyIssue.AnyError(issues, start);
-        }
-
-        /// <summary>
-        /// Jacobi iterations that bring the implicit viscosity's smooth (steady) part to 1 % of its solution at substep
-        /// <paramref name="substep"/> (s): each iteration removes the share 1/(1 + a) of it, a = hν·Σw the solve's diagonal over
-        /// the rest lattice, a ≈ 15·hν/h_kernel²; so n = ln 0.01 / ln(a/(1 + a)). 1 when a is tiny; capped at 10⁶.
-        /// </summary>
-        public static int ViscosityIterationsNeeded(in FluidConstants c, float substep)
-        {
-            float h = c.Kernels.H;
-            double a = 15.0 * substep * c.Parameters.Viscosity * c.ViscosityCorrection / (h * h);
-            if (!(a > 0.0))
-                return 1;
-            double n = Math.Log(0.01) / Math.Log(a / (1.0 + a));
-            return (int)Math.Min(1e6, Math.Max(1.0, Math.Ceiling(n)));
         }
 
         /// <summary>Checks a tap against its fluid (spacing and budget); adds issues. Returns false on an error.</summary>
