@@ -134,16 +134,16 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Coulomb friction μ of the domain box's faces normal to x, y and z (0 = free slip, at most 1). The floor is y: a particle resting on it slides with deceleration μ.y·g.")]
         public Vector3 domainFriction;
 
-        [Tooltip("No-slip share of the domain box's faces normal to x, y and z (0 = free slip, 1 = no slip): in the viscosity solve the face holds the fluid beside it at rest. Needs a viscosity and at least one viscosity iteration. CPU only.")]
+        [Tooltip("No-slip share of the domain box's faces normal to x, y and z (0 = free slip, 1 = no slip): in the viscosity solve the face holds the fluid beside it at rest. Needs a viscosity and at least one viscosity iteration.")]
         public Vector3 domainNoSlip;
 
-        [Tooltip("Periodic along x: a particle leaving through one x face enters through the other, and there is no wall on that axis (a channel standing for an unbounded flow). The extent must be at least 3 kernel radii. CPU only.")]
+        [Tooltip("Periodic along x: a particle leaving through one x face enters through the other, and there is no wall on that axis (a channel standing for an unbounded flow). The extent must be at least 3 kernel radii.")]
         public bool periodicX;
 
-        [Tooltip("Periodic along y (see Periodic X). CPU only.")]
+        [Tooltip("Periodic along y (see Periodic X).")]
         public bool periodicY;
 
-        [Tooltip("Periodic along z (see Periodic X). CPU only.")]
+        [Tooltip("Periodic along z (see Periodic X).")]
         public bool periodicZ;
 
         /// <summary>The solver settings these fields describe (the preset's material when one is chosen), in world space.</summary>

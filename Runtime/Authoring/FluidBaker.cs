@@ -27,9 +27,6 @@ namespace SoftBodyDynamics.Authoring
             if (authoring.backend != FluidBackend.Cpu && authoring.storage == FluidStorage.Entities)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidGpuNeedsPackedStorage, -1,
                     "Entities storage (one entity per particle) runs on the CPU; use Packed storage to run the fluid on the GPU."));
-            if (authoring.backend != FluidBackend.Cpu && FluidBackendChoice.UnsupportedOnGpu(parameters) is string unsupported)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidGpuFeatureUnsupported, -1,
-                    $"The fluid asks for the GPU, but {unsupported}: it runs on the CPU."));
             if (authoring.backend != FluidBackend.Cpu && authoring.readback == FluidReadback.EveryNFrames && authoring.readbackInterval < 1)
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidReadbackIntervalInvalid, -1,
                     $"The read-back interval is {authoring.readbackInterval} frames; it must be at least 1."));

@@ -81,8 +81,6 @@ namespace SoftBodyDynamics
                 reason = "Entities storage runs on the CPU";
             else if (shader == null)
                 reason = "no compute shader is assigned";
-            else if (FluidBackendChoice.UnsupportedOnGpu(settings.Parameters) is string unsupported)
-                reason = unsupported;
             else
                 FluidBackendChoice.UseGpu(settings.Backend, SystemInfo.supportsComputeShaders, SystemInfo.supportsAsyncGPUReadback,
                     SystemInfo.maxComputeWorkGroupSize, SystemInfo.maxComputeBufferInputsCompute, out reason);

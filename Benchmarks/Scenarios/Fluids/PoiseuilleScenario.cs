@@ -100,15 +100,36 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return r;
         }
 
+        /// <summary>
+        /// The mean profile of <paramref name="b"/>: u_x and y averaged over each of <paramref name="layers"/> layers Δx thick
+        /// across the channel (NaN for an empty layer), in m/s and m.
+        /// </summary>
+        public static (double[] speed, double[] height) MeanProfile(FluidBuffers b, int layers)
+        {
+            var sumU = new double[layers];
+            var sumY = new double[layers];
+            var count = new int[layers];
+            for (int i = 0; i < b.Status.Count; i++)
+            {
+                float3 x = b.Positions[i];
+                int layer = Math.Clamp((int)(x.y / Width * layers), 0, layers - 1);
+                sumU[layer] += b.Velocities[i].x;
+                sumY[layer] += x.y;
+                count[layer]++;
+            }
+            for (int k = 0; k < layers; k++)
+            {
+                sumU[k] = count[k] > 0 ? sumU[k] / count[k] : double.NaN;
+                sumY[k] = count[k] > 0 ? sumY[k] / count[k] : double.NaN;
+            }
+            return (sumU, sumY);
+        }
+
         void Measure()
         {
             FluidBuffers b = m_Buffers;
             int n = b.Status.Count;
             double scatter = 0, flow = 0, cross = 0, density = 0, rho0 = m_Constants.Parameters.RestDensity;
-            // The mean profile: u_x and y averaged over each layer Δx thick across the channel.
-            var sumU = new double[m_Layers];
-            var sumY = new double[m_Layers];
-            var count = new int[m_Layers];
             for (int i = 0; i < n; i++)
             {
                 float3 x = b.Positions[i], v = b.Velocities[i];
@@ -117,18 +138,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 flow += v.x;
                 cross += math.sqrt(v.y * v.y + v.z * v.z);
                 density += Math.Abs(b.Densities[i] / rho0 - 1);
-                int layer = Math.Clamp((int)(x.y / Width * m_Layers), 0, m_Layers - 1);
-                sumU[layer] += v.x;
-                sumY[layer] += x.y;
-                count[layer]++;
             }
+            var (speed, height) = MeanProfile(b, m_Layers);
             double profile = 0;
             int layers = 0;
             for (int k = 0; k < m_Layers; k++)
             {
-                if (count[k] == 0)
+                if (double.IsNaN(speed[k]))
                     continue;
-                double d = sumU[k] / count[k] - Analytic(sumY[k] / count[k]);
+                double d = speed[k] - Analytic(height[k]);
                 profile += d * d;
                 layers++;
             }

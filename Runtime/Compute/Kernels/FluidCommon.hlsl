@@ -74,10 +74,21 @@ uint4 _Counts;           // x capacity, y spawn count, z scan element count, w s
 uint4 _Scan;             // x index of the level's block totals in _ScanSums, yzw unused
 uint4 _ShapeCounts;      // x colliders, y drains (in _Shapes), zw unused
 float4 _Colliding;       // x collider friction μ, yzw the domain faces' μ per axis
+float4 _Period;          // xyz the domain's extent on its periodic axes (m), 0 on the others; w 1 when any axis is periodic
+float4 _InversePeriod;   // xyz 1 / the period on the periodic axes (1/m), 0 on the others; w unused
+float4 _NoSlip;          // xyz no-slip share of the domain faces per axis (0 on periodic axes); w unused
 
 bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 
 uint LiveCount() { return _Stats[STAT_LIVE]; }
+
+// FluidConstants.Offset: xᵢ − xⱼ, between the nearest images on the periodic axes (FluidConstants.MinimumImage).
+float3 PairOffset(float3 xi, float3 xj)
+{
+    float3 d = xi - xj;
+    if (_Period.w != 0.0) d -= _Period.xyz * round(d * _InversePeriod.xyz);
+    return d;
+}
 
 // FluidGrid.Cell: the cell of x, clamped into the grid (clamped in float first).
 int3 CellOf(float3 x)

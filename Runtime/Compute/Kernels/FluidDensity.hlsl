@@ -4,6 +4,30 @@
 #define SBD_FLUID_DENSITY_INCLUDED
 #include "FluidWalls.hlsl"
 
+// NeighbourRows.AxisRanges: the cells within 2 of cell coordinate u along an axis of n cells as two inclusive ranges
+// (x..y, z..w; an empty one ends below its start): on a periodic axis of `period` cells the part beyond an end wraps.
+int4 AxisRanges(float u, int n, bool periodic, float period)
+{
+    if (!periodic)
+    {
+        int c = min((int)u, n - 1);
+        return int4(max(c - 2, 0), min(c + 2, n - 1), 0, -1);
+    }
+    float lo = u - 2.0, hi = u + 2.0;
+    int4 r = int4(max((int)floor(lo), 0), min((int)floor(hi), n - 1), 0, -1);
+    if (lo < 0.0)
+    {
+        r.z = clamp((int)floor(lo + period), r.y + 1, n);
+        r.w = n - 1;
+    }
+    else if (hi >= period)
+    {
+        r.z = 0;
+        r.w = min((int)floor(hi - period), r.x - 1);
+    }
+    return r;
+}
+
 // ρ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored and counted against the bound.
 float StoreDensity(uint i, float3 xi, float kernelSum)
 {
@@ -35,14 +59,29 @@ void Density(uint3 id : SV_DispatchThreadID)
     float sum = 0.0, divergence = 0.0;
     bool bulk = _Flags.x != 0 && _Smoothing.w > 0.0;
     float3 vi = bulk ? _Velocities[i].xyz : float3(0.0, 0.0, 0.0);
-    for (int z = z0; z <= z1; z++)
-    for (int y = y0; y <= y1; y++)
+    // The cells within h along each axis as two ranges each (the second empty unless a periodic axis wraps).
+    int4 xs = int4(x0, x1, 0, -1), ys = int4(y0, y1, 0, -1), zs = int4(z0, z1, 0, -1);
+    if (_Period.w != 0.0)
     {
+        float3 extent = max(_DomainMax.xyz - _DomainMin.xyz, 1.0 / _GridOrigin.w) * _GridOrigin.w;
+        float3 u = clamp((xi - _GridOrigin.xyz) * _GridOrigin.w, 0.0, extent);
+        xs = AxisRanges(u.x, d.x, _Period.x > 0.0, extent.x);
+        ys = AxisRanges(u.y, d.y, _Period.y > 0.0, extent.y);
+        zs = AxisRanges(u.z, d.z, _Period.z > 0.0, extent.z);
+    }
+    for (int zp = 0; zp < 2; zp++)
+    for (int z = zp == 0 ? zs.x : zs.z; z <= (zp == 0 ? zs.y : zs.w); z++)
+    for (int yp = 0; yp < 2; yp++)
+    for (int y = yp == 0 ? ys.x : ys.z; y <= (yp == 0 ? ys.y : ys.w); y++)
+    for (int xp = 0; xp < 2; xp++)
+    {
+        int xa = xp == 0 ? xs.x : xs.z, xb = xp == 0 ? xs.y : xs.w;
+        if (xb < xa) continue;
         int row = d.x * (y + d.y * z);
-        uint begin = _CellStart[row + x0], end = _CellStart[row + x1 + 1];
+        uint begin = _CellStart[row + xa], end = _CellStart[row + xb + 1];
         for (uint j = begin; j < end; j++)
         {
-            float3 r = xi - _Positions[j].xyz;
+            float3 r = PairOffset(xi, _Positions[j].xyz);
             float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
             if (!(q > 0.0)) continue;
             sum += q * q * q;
@@ -80,7 +119,7 @@ void DensityFromNeighbours(uint3 id : SV_DispatchThreadID)
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)
     {
-        float3 r = xi - _Positions[_Neighbours[list + n]].xyz;
+        float3 r = PairOffset(xi, _Positions[_Neighbours[list + n]].xyz);
         float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
         if (q > 0.0) sum += q * q * q;
     }

@@ -16,7 +16,7 @@ void SurfaceNormals(uint3 id : SV_DispatchThreadID)
     for (uint a = 0; a < count; a++)
     {
         uint j = _Neighbours[list + a];
-        float3 rij = xi - _Positions[j].xyz;
+        float3 rij = PairOffset(xi, _Positions[j].xyz);
         n += (m / _Densities[j]) * SpikyGradientScale(length(rij)) * rij;
     }
     _VectorsB[i] = float4(_Kernel.x * n, 0.0);
@@ -41,7 +41,7 @@ float4 Acceleration(uint i, bool pressureAndGravity)
         for (uint n = 0; n < count; n++)
         {
             uint j = _Neighbours[list + n];
-            float3 rij = xi - _Positions[j].xyz;
+            float3 rij = PairOffset(xi, _Positions[j].xyz);
             float r2 = dot(rij, rij);
             float r = sqrt(r2);
             float scale = pi + _Pressures[j];
@@ -68,8 +68,8 @@ float4 Acceleration(uint i, bool pressureAndGravity)
         float weight = 0.0, spacing = _Cohesion.z;
         for (uint n = 0; n < count; n++)
         {
-            float3 xj = _Positions[_Neighbours[list + n]].xyz;
-            float3 rij = xi - xj;
+            float3 rij = PairOffset(xi, _Positions[_Neighbours[list + n]].xyz);
+            float3 xj = xi - rij;
             float r2 = dot(rij, rij);
             float w = Poly6(r2);
             centre += w * xj;
@@ -89,7 +89,7 @@ float4 Acceleration(uint i, bool pressureAndGravity)
         for (uint n = 0; n < count; n++)
         {
             uint j = _Neighbours[list + n];
-            float3 rij = xi - _Positions[j].xyz;
+            float3 rij = PairOffset(xi, _Positions[j].xyz);
             float r = length(rij);
             if (!(r < H)) continue;
             float kij = 2.0 * rho0 / (rhoi + _Densities[j]);

@@ -30,18 +30,20 @@ void CopyVelocitiesToA(uint3 id : SV_DispatchThreadID)
 }
 
 // One Jacobi iteration of implicit viscosity from _VectorsB (fromB) or _VectorsA:
-// v⁽ᵏ⁺¹⁾ᵢ = (v⁰ᵢ + hν'·Σⱼ wᵢⱼ·v⁽ᵏ⁾ⱼ) / (1 + hν'·Σⱼ wᵢⱼ), wᵢⱼ = (h − r)/(ρᵢ + ρⱼ), hν' = h·ν·2m·(Laplacian coefficient).
+// v⁽ᵏ⁺¹⁾ᵢ = (v⁰ᵢ + hν'·Σⱼ wᵢⱼ·v⁽ᵏ⁾ⱼ) / (1 + hν'·Σⱼ wᵢⱼ), wᵢⱼ = (h − r)/(ρᵢ + ρⱼ), hν' = h·ν·2m·(Laplacian coefficient)·κ_ν;
+// a no-slip face adds (ρ₀/m)·NoSlipWeight/(ρᵢ + ρ₀) to the weight only (FluidBoundary.NoSlipWeight).
 float4 ViscosityIteration(uint i, bool fromB)
 {
     float3 xi = _Positions[i].xyz;
     float rhoi = _Densities[i], hk = _Kernel.x, hnu = _Smoothing.x;
     float3 sum = float3(0.0, 0.0, 0.0);
-    float weight = 0.0;
+    bool noSlip = any(_NoSlip.xyz > 0.0);
+    float weight = noSlip ? _Material.y / _Material.x * NoSlipWeight(xi) / (rhoi + _Material.y) : 0.0;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)
     {
         uint j = _Neighbours[list + n];
-        float r = length(xi - _Positions[j].xyz);
+        float r = length(PairOffset(xi, _Positions[j].xyz));
         float w = max(hk - r, 0.0) / (rhoi + _Densities[j]);
         sum += w * (fromB ? _VectorsB[j].xyz : _VectorsA[j].xyz);
         weight += w;
@@ -78,7 +80,7 @@ void Alignment(uint3 id : SV_DispatchThreadID)
     for (uint n = 0; n < count; n++)
     {
         uint j = _Neighbours[list + n];
-        float3 r = xi - _Positions[j].xyz;
+        float3 r = PairOffset(xi, _Positions[j].xyz);
         float w = Poly6(dot(r, r)) / _Densities[j];
         sum += w * _Velocities[j].xyz;
         weight += w;

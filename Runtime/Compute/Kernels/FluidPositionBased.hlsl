@@ -31,7 +31,7 @@ void Lambda(uint3 id : SV_DispatchThreadID)
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)
     {
-        float3 rij = xi - _Positions[_Neighbours[list + n]].xyz;
+        float3 rij = PairOffset(xi, _Positions[_Neighbours[list + n]].xyz);
         float3 g = mOverRho0 * SpikyGradientScale(length(rij)) * rij;
         gradI += g;
         sumSq += dot(g, g);
@@ -59,7 +59,7 @@ void Correction(uint3 id : SV_DispatchThreadID)
     for (uint n = 0; n < count; n++)
     {
         uint j = _Neighbours[list + n];
-        float3 rij = xi - _Positions[j].xyz;
+        float3 rij = PairOffset(xi, _Positions[j].xyz);
         float lij = li + _Pressures[j];
         if (artificial > 0.0)
         {
@@ -96,14 +96,14 @@ void ApplyCorrection(uint3 id : SV_DispatchThreadID)
     _Positions[i] = float4(x, xa.w);
 }
 
-// vᵢ = (xᵢ − x⁰ᵢ)/h.
+// vᵢ = (xᵢ − x⁰ᵢ)/h (the nearest image's offset across a periodic face).
 [numthreads(FLUID_GROUP, 1, 1)]
 void VelocityFromPositions(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
     float invH = 1.0 / _Motion.x;
-    _Velocities[i] = float4((_Positions[i].xyz - _Previous[i].xyz) * invH, _Velocities[i].w);
+    _Velocities[i] = float4(PairOffset(_Positions[i].xyz, _Previous[i].xyz) * invH, _Velocities[i].w);
 }
 
 #endif

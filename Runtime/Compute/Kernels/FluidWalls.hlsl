@@ -30,6 +30,9 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
     float h = _Kernel.x, kappa = _DomainMax.w;
     float3 below = x - _DomainMin.xyz;
     float3 above = _DomainMax.xyz - x;
+    // A periodic axis has no faces.
+    below = _Period.xyz > 0.0 ? FLOAT_MAX : below;
+    above = _Period.xyz > 0.0 ? FLOAT_MAX : above;
     float inside = 1.0;
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
@@ -62,12 +65,44 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
     densityFraction = 1.0 - inside;
 }
 
+// SphKernels.NoSlipWallIntegral: ∫(h − r)(1 + t/d) dV beyond a plane at distance d, the particle's velocity mirrored
+// through zero at the plane (m⁴); d at least 1e-3·h.
+float NoSlipWallIntegral(float d)
+{
+    float H = _Kernel.x;
+    if (!(d < H)) return 0.0;
+    d = max(d, 1e-3 * H);
+    float e = H - d;
+    float e3 = e * e * e;
+    return 3.14159265358979 / 6.0 * e3 * (H + d) + 3.14159265358979 / 20.0 * e3 * e * (H + 2.0 / 3.0 * d) / d;
+}
+
+// FluidBoundary.NoSlipWeight: Σ over the faces of the no-slip share times the wall integral (zero shares on periodic axes).
+float NoSlipWeight(float3 x)
+{
+    float3 below = x - _DomainMin.xyz, above = _DomainMax.xyz - x;
+    return _NoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
+        + _NoSlip.y * (NoSlipWallIntegral(below.y) + NoSlipWallIntegral(above.y))
+        + _NoSlip.z * (NoSlipWallIntegral(below.z) + NoSlipWallIntegral(above.z));
+}
+
 // FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,
 // with the faces' friction μ per axis, cancels the motion along them since start by at most Σ μ_axis × depth_axis (and the velocity by that share).
 void ClampToDomain(inout float3 x, inout float3 v, float3 start)
 {
     float3 lo = _DomainMin.xyz + _DomainMin.w;
     float3 hi = _DomainMax.xyz - _DomainMin.w;
+    if (_Period.w != 0.0)
+    {
+        // Periodic axes wrap by whole periods (FluidConstants.Wrap) instead; the motion since start is the nearest image's.
+        float3 wrapped = x;
+        [unroll] for (int p = 0; p < 3; p++)
+            if (_Period[p] > 0.0) wrapped[p] -= _Period[p] * floor((x[p] - _DomainMin[p]) * _InversePeriod[p]);
+        start += wrapped - x;
+        x = wrapped;
+        lo = _Period.xyz > 0.0 ? -FLOAT_MAX : lo;
+        hi = _Period.xyz > 0.0 ? FLOAT_MAX : hi;
+    }
     float3 clamped = clamp(x, lo, hi);
     if (all(clamped == x)) return;
     float3 depth = max(lo - x, 0.0) + max(x - hi, 0.0);

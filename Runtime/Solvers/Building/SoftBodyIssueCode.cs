@@ -282,8 +282,6 @@ namespace SoftBodyDynamics.Solvers
         FluidSurfaceLookReplaced = 238,
         /// <summary>Warning: the sphere radius leaves gaps between neighbouring particles (below 0.5 spacing) or blurs the fluid (above 2).</summary>
         FluidSurfaceRadiusUnusual = 239,
-        /// <summary>Warning: a fluid asks for the GPU but uses what the compute kernels do not simulate (periodic axes, no-slip faces): it runs on the CPU.</summary>
-        FluidGpuFeatureUnsupported = 240,
         /// <summary>Warning: a periodic axis of the fluid's domain is shorter than three kernel radii, so it is not periodic.</summary>
         FluidPeriodicAxisTooShort = 241,
         /// <summary>Warning: the fluid's implicit viscosity needs more Jacobi iterations than a substep runs to converge at its substep (a steady flow then runs too fast).</summary>

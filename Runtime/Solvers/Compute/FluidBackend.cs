@@ -1,5 +1,3 @@
-using Unity.Mathematics;
-
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>Where a fluid is simulated.</summary>
@@ -38,20 +36,6 @@ namespace SoftBodyDynamics.Solvers
             else if (maxBuffersPerKernel < FluidComputeLayout.MaxBuffersPerKernel)
                 reason = $"this device allows {maxBuffersPerKernel} buffers per compute kernel, the fluid kernels use up to {FluidComputeLayout.MaxBuffersPerKernel}";
             return reason == null;
-        }
-
-        /// <summary>
-        /// What of <paramref name="parameters"/> the compute kernels do not simulate (periodic axes, no-slip faces), as the
-        /// reason the fluid stays on the CPU; null when they simulate all of it.
-        /// </summary>
-        public static string UnsupportedOnGpu(in FluidParameters parameters)
-        {
-            FluidParameters p = parameters.Sanitized();
-            if (math.any(p.Periodic))
-                return "the compute kernels have no periodic axes";
-            if (math.any(p.DomainNoSlip > 0f) && p.Viscosity > 0f && p.ViscosityIterations > 0)
-                return "the compute kernels have no no-slip faces";
-            return null;
         }
     }
 }

@@ -9,6 +9,8 @@ namespace SoftBodyDynamics.Solvers
     public struct FluidComputeConstants
     {
         public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Colliding;
+        /// <summary>xyz the periodic axes' periods (0 elsewhere), w 1 when any axis is periodic; xyz their inverses; xyz the faces' no-slip shares (0 on periodic axes).</summary>
+        public float4 Period, InversePeriod, NoSlip;
         /// <summary>x colliders, y drains in <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeStep.PackShapes"/>).</summary>
         public int4 GridDims, Flags, ShapeCounts;
 
@@ -41,6 +43,9 @@ namespace SoftBodyDynamics.Solvers
                 Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
                 ShapeCounts = new int4(colliders, drains, 0, 0),
                 Colliding = new float4(p.WallFriction, p.DomainFriction.x, p.DomainFriction.y, p.DomainFriction.z),
+                Period = new float4(c.Period, c.IsPeriodic ? 1f : 0f),
+                InversePeriod = new float4(c.InversePeriod, 0f),
+                NoSlip = new float4(math.select(p.DomainNoSlip, float3.zero, p.Periodic), 0f),
             };
         }
 
@@ -61,6 +66,9 @@ namespace SoftBodyDynamics.Solvers
             commands.SetInts(FluidComputeGlobal.Flags, Flags);
             commands.SetInts(FluidComputeGlobal.ShapeCounts, ShapeCounts);
             commands.SetVector(FluidComputeGlobal.Colliding, Colliding);
+            commands.SetVector(FluidComputeGlobal.Period, Period);
+            commands.SetVector(FluidComputeGlobal.InversePeriod, InversePeriod);
+            commands.SetVector(FluidComputeGlobal.NoSlip, NoSlip);
         }
     }
 }

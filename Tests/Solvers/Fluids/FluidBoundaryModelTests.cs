@@ -205,20 +205,6 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
-        public void PeriodicAxesAndNoSlipFaces_KeepAGpuFluidOnTheCpu()
-        {
-            FluidParameters p = FluidParameters.Default;
-            Assert.IsNull(FluidBackendChoice.UnsupportedOnGpu(p));
-            p.Periodic = new bool3(false, false, true);
-            StringAssert.Contains("periodic", FluidBackendChoice.UnsupportedOnGpu(p));
-            p = FluidParameters.Default;
-            p.DomainNoSlip = new float3(0f, 1f, 0f);
-            StringAssert.Contains("no-slip", FluidBackendChoice.UnsupportedOnGpu(p));
-            p.ViscosityIterations = 0;
-            Assert.IsNull(FluidBackendChoice.UnsupportedOnGpu(p), "no viscosity pass, so the faces change nothing");
-        }
-
-        [Test]
         public void ShortPeriodicAxisAndUnconvergedViscosity_AreBakeWarnings()
         {
             var issues = new System.Collections.Generic.List<SoftBodyIssue>();

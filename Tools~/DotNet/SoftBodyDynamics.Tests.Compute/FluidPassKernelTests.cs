@@ -48,6 +48,15 @@ namespace SoftBodyDynamics.Tests.Compute
                     p.WallFriction = 0.3f;
                     p.DomainFriction = new float3(0.1f, 0.3f, 0.2f);
                     break;
+                case "WCSPH periodic no-slip viscosity":
+                case "PBF periodic no-slip viscosity":
+                    // Periodic along x and z (the block spans z, so particles meet across its faces), a no-slip floor.
+                    p.Solver = setting.StartsWith("PBF") ? FluidSolverKind.PositionBased : FluidSolverKind.WeaklyCompressible;
+                    p.Periodic = new bool3(true, false, true);
+                    p.DomainNoSlip = new float3(0f, 1f, 0f);
+                    p.Viscosity = 0.01f;
+                    p.ViscosityIterations = 3;
+                    break;
                 case "PBF Akinci viscosity":
                     p.Solver = FluidSolverKind.PositionBased;
                     p.PressureIterations = 3;
@@ -81,6 +90,8 @@ namespace SoftBodyDynamics.Tests.Compute
         [TestCase("PBF Akinci viscosity")]
         [TestCase("WCSPH colliders")]
         [TestCase("PBF colliders")]
+        [TestCase("WCSPH periodic no-slip viscosity")]
+        [TestCase("PBF periodic no-slip viscosity")]
         public void EveryPass_MatchesItsCpuPassWithinRoundOff(string setting)
         {
             var c = new FluidConstants(Scene(setting));
