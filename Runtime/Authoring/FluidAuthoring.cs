@@ -131,6 +131,10 @@ namespace SoftBodyDynamics.Authoring
         [Min(0f)]
         public float wallFriction;
 
+        [Tooltip("No-slip share of the colliders (0 = free slip, 1 = no slip): in the viscosity solve a collider holds the fluid beside it at rest, like No-Slip Faces for the domain box. Needs a viscosity and at least one viscosity iteration.")]
+        [Range(0f, 1f)]
+        public float wallNoSlip;
+
         [Tooltip("Coulomb friction μ of the domain box's faces normal to x, y and z (0 = free slip, at most 1). The floor is y: a particle resting on it slides with deceleration μ.y·g.")]
         public Vector3 domainFriction;
 
@@ -179,6 +183,7 @@ namespace SoftBodyDynamics.Authoring
             p.WallFriction = wallFriction;
             p.DomainFriction = UnityMathConversions.ToFloat3(domainFriction);
             p.DomainNoSlip = UnityMathConversions.ToFloat3(domainNoSlip);
+            p.WallNoSlip = wallNoSlip;
             p.Periodic = new Unity.Mathematics.bool3(periodicX, periodicY, periodicZ);
             return p;
         }

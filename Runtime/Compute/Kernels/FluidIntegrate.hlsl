@@ -37,7 +37,7 @@ float4 ViscosityIteration(uint i, bool fromB)
     float3 xi = _Positions[i].xyz;
     float rhoi = _Densities[i], hk = _Kernel.x, hnu = _Smoothing.x;
     float3 sum = float3(0.0, 0.0, 0.0);
-    bool noSlip = any(_NoSlip.xyz > 0.0);
+    bool noSlip = any(_NoSlip.xyz > 0.0) || (_NoSlip.w > 0.0 && _ShapeCounts.x > 0);
     float weight = noSlip ? _Material.y / _Material.x * NoSlipWeight(xi) / (rhoi + _Material.y) : 0.0;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)

@@ -77,13 +77,22 @@ float NoSlipWallIntegral(float d)
     return 3.14159265358979 / 6.0 * e3 * (H + d) + 3.14159265358979 / 20.0 * e3 * e * (H + 2.0 / 3.0 * d) / d;
 }
 
-// FluidBoundary.NoSlipWeight: Σ over the faces of the no-slip share times the wall integral (zero shares on periodic axes).
+// FluidBoundary.NoSlipWeight: Σ over the faces of the no-slip share times the wall integral (zero shares on periodic axes),
+// and the colliders' share at each collider's tangent plane.
 float NoSlipWeight(float3 x)
 {
     float3 below = x - _DomainMin.xyz, above = _DomainMax.xyz - x;
-    return _NoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
+    float weight = _NoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
         + _NoSlip.y * (NoSlipWallIntegral(below.y) + NoSlipWallIntegral(above.y))
         + _NoSlip.z * (NoSlipWallIntegral(below.z) + NoSlipWallIntegral(above.z));
+    if (_NoSlip.w > 0.0)
+        for (uint c = 0; c < _ShapeCounts.x; c++)
+        {
+            float3 normal; float depth; bool deep;
+            if (Penetration(LoadShape(c), x, _Kernel.x, normal, depth, deep))
+                weight += _NoSlip.w * NoSlipWallIntegral(_Kernel.x - depth);
+        }
+    return weight;
 }
 
 // FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,

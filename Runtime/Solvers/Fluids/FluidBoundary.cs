@@ -73,16 +73,24 @@ namespace SoftBodyDynamics.Solvers
         /// Σ over the domain faces within h of <paramref name="x"/> of the no-slip share s (<see cref="FluidParameters.DomainNoSlip"/>)
         /// times the no-slip wall integral (m⁴; <see cref="SphKernels.NoSlipWallIntegral"/>): the viscosity kernel's Laplacian
         /// over the wall with the particle's velocity mirrored through zero at the face, up to the factor the particles' sum
-        /// shares. It only adds to the particle's own weight in the viscosity solve. Periodic axes have no faces.
+        /// shares. It only adds to the particle's own weight in the viscosity solve. Periodic axes have no faces. With
+        /// <see cref="FluidParameters.WallNoSlip"/> every collider within h adds its share of the same integral at its tangent
+        /// plane (the walls of <see cref="Sample"/>).
         /// </summary>
-        public static float NoSlipWeight(in FluidConstants c, float3 x)
+        public static float NoSlipWeight(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x)
         {
             SphKernels k = c.Kernels;
             float3 s = math.select(c.Parameters.DomainNoSlip, float3.zero, c.Parameters.Periodic);
             float3 below = x - c.Parameters.DomainMin, above = c.Parameters.DomainMax - x;
-            return s.x * (k.NoSlipWallIntegral(below.x) + k.NoSlipWallIntegral(above.x))
+            float weight = s.x * (k.NoSlipWallIntegral(below.x) + k.NoSlipWallIntegral(above.x))
                 + s.y * (k.NoSlipWallIntegral(below.y) + k.NoSlipWallIntegral(above.y))
                 + s.z * (k.NoSlipWallIntegral(below.z) + k.NoSlipWallIntegral(above.z));
+            float share = c.Parameters.WallNoSlip;
+            if (share > 0f)
+                for (int w = 0; w < colliders.Length; w++)
+                    if (ParticleCollision.Penetration(colliders[w], x, k.H, out _, out float depth))
+                        weight += share * k.NoSlipWallIntegral(k.H - depth);
+            return weight;
         }
 
         /// <summary>

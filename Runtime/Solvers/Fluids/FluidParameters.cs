@@ -79,6 +79,11 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainMin;
         /// <summary>Upper corner of the domain box (m, world).</summary>
         public float3 DomainMax;
+        /// <summary>
+        /// No-slip share of the colliders (0 = free slip, 1 = no slip), the domain faces' rule (<see cref="DomainNoSlip"/>) at
+        /// each collider's tangent plane: in the viscosity solve the collider holds the fluid beside it at rest. Default 0.
+        /// </summary>
+        public float WallNoSlip;
         /// <summary>Coulomb friction coefficient μ at the colliders (0 = free slip, at most 1): a contact cancels tangential motion up to μ × its depth (a particle resting on a collider slides with deceleration μg).</summary>
         public float WallFriction;
         /// <summary>
@@ -147,6 +152,7 @@ namespace SoftBodyDynamics.Solvers
             DomainMin = new float3(-0.5f, 0f, -0.5f),
             DomainMax = new float3(0.5f, 1f, 0.5f),
             WallFriction = 0f,
+            WallNoSlip = 0f,
             DomainFriction = float3.zero,
             DomainNoSlip = float3.zero,
             Periodic = new bool3(false, false, false),
@@ -189,6 +195,7 @@ namespace SoftBodyDynamics.Solvers
                 p.DomainMax = d.DomainMax;
             }
             p.WallFriction = Friction(WallFriction);
+            p.WallNoSlip = Friction(WallNoSlip);
             p.DomainFriction = new float3(Friction(DomainFriction.x), Friction(DomainFriction.y), Friction(DomainFriction.z));
             p.DomainNoSlip = new float3(Friction(DomainNoSlip.x), Friction(DomainNoSlip.y), Friction(DomainNoSlip.z));
             float3 extent = p.DomainMax - p.DomainMin;

@@ -384,17 +384,17 @@ namespace SoftBodyDynamics.Solvers
         /// weighted average of v⁰ and neighbours, so it is bounded for any h·ν; the symmetric weight conserves momentum
         /// at convergence. v⁰ is <see cref="FluidParticles.Velocities"/>.
         /// </summary>
-        public static void ViscosityIteration(in FluidConstants c, FluidParticles p, FluidScratch s, ReadOnlySpan<float3> source,
-            Span<float3> destination, int start, int end, float h)
+        public static void ViscosityIteration(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            ReadOnlySpan<float3> source, Span<float3> destination, int start, int end, float h)
         {
             if (c.IsPeriodic)
-                ViscosityIteration(c, p, s, source, destination, start, end, h, new NearestImageOffset(c));
+                ViscosityIteration(c, colliders, p, s, source, destination, start, end, h, new NearestImageOffset(c));
             else
-                ViscosityIteration(c, p, s, source, destination, start, end, h, default(DirectOffset));
+                ViscosityIteration(c, colliders, p, s, source, destination, start, end, h, default(DirectOffset));
         }
 
-        static void ViscosityIteration<TOffset>(in FluidConstants c, FluidParticles p, FluidScratch s, ReadOnlySpan<float3> source,
-            Span<float3> destination, int start, int end, float h, TOffset offset) where TOffset : struct, IPairOffset
+        static void ViscosityIteration<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
+            ReadOnlySpan<float3> source, Span<float3> destination, int start, int end, float h, TOffset offset) where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
             float hnu = h * c.Parameters.Viscosity;
@@ -405,7 +405,7 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<float> densities = s.Densities;
             ReadOnlySpan<int> neighbours = s.Neighbours;
             float hk = k.H;
-            bool noSlip = math.any(c.Parameters.DomainNoSlip > 0f);
+            bool noSlip = math.any(c.Parameters.DomainNoSlip > 0f) || (c.Parameters.WallNoSlip > 0f && colliders.Length > 0);
             float wallWeight = c.Parameters.RestDensity / c.Mass;
             for (int i = start; i < end; i++)
             {
@@ -413,7 +413,7 @@ namespace SoftBodyDynamics.Solvers
                 float rhoi = densities[i];
                 float3 sum = float3.zero;
                 // A no-slip face mirrors the particle's own velocity through zero (ghost ∝ −vᵢ): it adds only to the weight.
-                float weight = noSlip ? wallWeight * FluidBoundary.NoSlipWeight(c, xi) / (rhoi + c.Parameters.RestDensity) : 0f;
+                float weight = noSlip ? wallWeight * FluidBoundary.NoSlipWeight(c, colliders, xi) / (rhoi + c.Parameters.RestDensity) : 0f;
                 ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
                 for (int n = 0; n < list.Length; n++)
                 {
@@ -659,8 +659,8 @@ namespace SoftBodyDynamics.Solvers
                 case FluidPass.CohesionForces: Forces(c, colliders, p, s, s.VectorsA, start, end, h, false); break;
                 case FluidPass.CopyAToVelocities: s.VectorsA.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;
                 case FluidPass.CopyVelocitiesToA: p.Velocities.Slice(start, n).CopyTo(s.VectorsA.Slice(start, n)); break;
-                case FluidPass.ViscosityAToB: ViscosityIteration(c, p, s, s.VectorsA, s.VectorsB, start, end, h); break;
-                case FluidPass.ViscosityBToA: ViscosityIteration(c, p, s, s.VectorsB, s.VectorsA, start, end, h); break;
+                case FluidPass.ViscosityAToB: ViscosityIteration(c, colliders, p, s, s.VectorsA, s.VectorsB, start, end, h); break;
+                case FluidPass.ViscosityBToA: ViscosityIteration(c, colliders, p, s, s.VectorsB, s.VectorsA, start, end, h); break;
                 case FluidPass.CopyBToVelocities: s.VectorsB.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;
                 case FluidPass.Alignment: Alignment(c, p, s, s.VectorsA, start, end, h); break;
                 case FluidPass.Advect: Advect(c, p, s, start, end, h, ref counters); break;

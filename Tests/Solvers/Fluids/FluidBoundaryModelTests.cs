@@ -119,6 +119,30 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void NoSlipCollider_IsTheNoSlipFaceAtItsPlane()
+        {
+            // One boundary model: a no-slip plane collider on the floor gives a particle the weight a no-slip floor face does,
+            // up to the float32 round-off of d = h − (h − d) (relative 1e-5 of the integral near the wall).
+            FluidParameters face = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.4f, 0.4f, 0.4f));
+            face.DomainNoSlip = new float3(0f, 1f, 0f);
+            FluidParameters collider = face;
+            collider.DomainNoSlip = float3.zero;
+            collider.WallNoSlip = 1f;
+            var cf = new FluidConstants(face);
+            var cc = new FluidConstants(collider);
+            var plane = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
+            foreach (float y in new[] { 0.005f, 0.01f, 0.02f, 0.035f, 0.05f })
+            {
+                var x = new float3(0.2f, y, 0.2f);
+                float expected = FluidBoundary.NoSlipWeight(cf, default, x);
+                Assert.AreEqual(expected, FluidBoundary.NoSlipWeight(cc, plane, x), 1e-5f * expected + 1e-12f, $"y = {y}");
+            }
+            Assert.Greater(FluidBoundary.NoSlipWeight(cf, default, new float3(0.2f, 0.01f, 0.2f)), 0f);
+            Assert.AreEqual(0f, FluidBoundary.NoSlipWeight(new FluidConstants(FluidTestScenes.Water(0.02f, float3.zero, new float3(0.4f))), plane,
+                new float3(0.2f, 0.01f, 0.2f)), "free slip by default");
+        }
+
+        [Test]
         public void ViscosityOnTheRestLattice_DifferentiatesAQuadraticFieldExactly()
         {
             // v = (y², 0, 0) has ∇²v = (2, 0, 0), and a Jacobi iteration from v gives vᵢ + hν·(∇²v)ᵢ/(1 + aᵢ), aᵢ = hν·Σw the
@@ -140,7 +164,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 b.Velocities[i] = float3.zero;
                 b.Scratch.VectorsA[i] = new float3(1f, 0f, 0f);
             }
-            FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
+            FluidPasses.ViscosityIteration(c, default, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
             for (int i = 0; i < live; i++)
                 weight[i] = b.Scratch.VectorsB[i].x / (1f - b.Scratch.VectorsB[i].x);
             for (int i = 0; i < live; i++)
@@ -149,7 +173,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 b.Velocities[i] = new float3(y * y, 0f, 0f);
                 b.Scratch.VectorsA[i] = b.Velocities[i];
             }
-            FluidPasses.ViscosityIteration(c, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
+            FluidPasses.ViscosityIteration(c, default, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
             int checkedCount = 0;
             double expected = 2.0 * step * p.Viscosity;
             for (int i = 0; i < live; i++)

@@ -48,6 +48,13 @@ namespace SoftBodyDynamics.Tests.Compute
                     p.WallFriction = 0.3f;
                     p.DomainFriction = new float3(0.1f, 0.3f, 0.2f);
                     break;
+                case "WCSPH colliders no-slip viscosity":
+                    p.WallFriction = 0.3f;
+                    p.WallNoSlip = 1f;
+                    p.DomainNoSlip = new float3(0.5f, 1f, 0f);
+                    p.Viscosity = 0.01f;
+                    p.ViscosityIterations = 3;
+                    break;
                 case "WCSPH periodic no-slip viscosity":
                 case "PBF periodic no-slip viscosity":
                     // Periodic along x and z (the block spans z, so particles meet across its faces), a no-slip floor.
@@ -90,6 +97,7 @@ namespace SoftBodyDynamics.Tests.Compute
         [TestCase("PBF Akinci viscosity")]
         [TestCase("WCSPH colliders")]
         [TestCase("PBF colliders")]
+        [TestCase("WCSPH colliders no-slip viscosity")]
         [TestCase("WCSPH periodic no-slip viscosity")]
         [TestCase("PBF periodic no-slip viscosity")]
         public void EveryPass_MatchesItsCpuPassWithinRoundOff(string setting)
