@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"every resolution. A substep runs n = ln 0.01/ln(a/(1 + a)) viscosity iterations when that is more than asked for, a = 15·hν/h² " +
                 "(about 20 at W/20 here); a fixed 4 left the steady flow 8 % and 37 % too fast at W/10 and W/20 (fluids.md).",
             },
-            Details = "fluids.md#poiseuille-flow",
+            Details = "fluids.md#poiseuille-flow-fluidaccuracypoiseuille",
         };
 
         public string ErrorMetricForPlot => "profile RMS error";
