@@ -286,5 +286,7 @@ namespace SoftBodyDynamics.Solvers
         FluidPeriodicAxisTooShort = 241,
         /// <summary>Warning: the fluid's implicit viscosity needs more Jacobi iterations than a substep runs to converge at its substep (a steady flow then runs too fast).</summary>
         FluidViscosityUnresolved = 242,
+        /// <summary>Warning: a fluid's wall friction μ or no-slip share (colliders or domain faces) is outside [0, 1] or NaN; the step clamps it.</summary>
+        FluidWallShareOutOfRange = 243,
     }
 }

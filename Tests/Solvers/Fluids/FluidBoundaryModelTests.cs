@@ -228,6 +228,24 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.AreEqual(FluidParameters.MaxViscosityIterations, FluidSolver.ViscosityIterations(new FluidConstants(q), 1f));
         }
 
+        [TestCase(-0.1f, 0f)]
+        [TestCase(0f, 1.5f)]
+        [TestCase(float.NaN, 0f)]
+        public void WallShareOutsideZeroToOne_IsABakeWarningAndClamped(float noSlip, float friction)
+        {
+            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            FluidParameters p = FluidParameters.Default;
+            Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
+            Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidWallShareOutOfRange), "defaults");
+            p.DomainNoSlip = new float3(0f, noSlip, 0f);
+            p.WallFriction = friction;
+            Assert.IsTrue(FluidValidation.Validate(p, 1000, issues), "a warning, not an error");
+            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidWallShareOutOfRange));
+            FluidParameters s = p.Sanitized();
+            Assert.That(s.DomainNoSlip.y, Is.InRange(0f, 1f));
+            Assert.That(s.WallFriction, Is.InRange(0f, 1f));
+        }
+
         [Test]
         public void ShortPeriodicAxisAndUnconvergedViscosity_AreBakeWarnings()
         {

@@ -36,6 +36,10 @@ namespace SoftBodyDynamics.Solvers
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidBudgetInvalid, -1, $"The particle budget must be positive (is {budget})."));
             if (!NonNegative(p.Viscosity) || !NonNegative(p.CohesionWeight) || !NonNegative(p.SeparationWeight) || !NonNegative(p.AlignmentRate) || !NonNegative(p.SurfaceTension) || !NonNegative(p.ArtificialViscosity))
                 issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidCoefficientInvalid, -1, "Viscosity, artificial viscosity, cohesion, separation, alignment and surface tension must be finite and not negative."));
+            if (!Share(p.WallFriction) || !Share(p.WallNoSlip) || !Share(p.DomainFriction.x) || !Share(p.DomainFriction.y) || !Share(p.DomainFriction.z)
+                || !Share(p.DomainNoSlip.x) || !Share(p.DomainNoSlip.y) || !Share(p.DomainNoSlip.z))
+                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidWallShareOutOfRange, -1,
+                    $"Wall friction μ and no-slip shares must be between 0 and 1 (colliders μ {p.WallFriction}, no-slip {p.WallNoSlip}; domain faces μ {p.DomainFriction}, no-slip {p.DomainNoSlip}): the step uses the nearest of 0 and 1, NaN as 0."));
             if (!SoftBodyIssue.AnyError(issues, start))
             {
                 float shortest = FluidParameters.MinPeriodicExtentRatio * h;
@@ -60,6 +64,8 @@ namespace SoftBodyDynamics.Solvers
             }
             return !SoftBodyIssue.AnyError(issues, start);
         }
+
+        static bool Share(float value) => value >= 0f && value <= 1f;
 
         /// <summary>Checks a tap against its fluid (spacing and budget); adds issues. Returns false on an error.</summary>
         public static bool ValidateTap(in FluidTapSettings s, ReadOnlySpan<FluidTapBurst> bursts, float spacing, int budget, List<SoftBodyIssue> issues)
