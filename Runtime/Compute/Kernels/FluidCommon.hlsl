@@ -82,7 +82,7 @@ bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 
 uint LiveCount() { return _Stats[STAT_LIVE]; }
 
-// FluidConstants.Offset: xᵢ − xⱼ, between the nearest images on the periodic axes (FluidConstants.MinimumImage).
+// FluidConstants.Offset: xᵢ − xⱼ, between the nearest images on the periodic axes (NearestImageOffset.Apply).
 float3 PairOffset(float3 xi, float3 xj)
 {
     float3 d = xi - xj;

@@ -45,7 +45,7 @@ namespace SoftBodyDynamics.Solvers
                 Colliding = new float4(p.WallFriction, p.DomainFriction.x, p.DomainFriction.y, p.DomainFriction.z),
                 Period = new float4(c.Period, c.IsPeriodic ? 1f : 0f),
                 InversePeriod = new float4(c.InversePeriod, 0f),
-                NoSlip = new float4(math.select(p.DomainNoSlip, float3.zero, p.Periodic), p.WallNoSlip),
+                NoSlip = new float4(c.FaceNoSlip, p.WallNoSlip),
             };
         }
 

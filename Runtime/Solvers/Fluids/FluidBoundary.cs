@@ -80,7 +80,7 @@ namespace SoftBodyDynamics.Solvers
         public static float NoSlipWeight(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x)
         {
             SphKernels k = c.Kernels;
-            float3 s = math.select(c.Parameters.DomainNoSlip, float3.zero, c.Parameters.Periodic);
+            float3 s = c.FaceNoSlip;
             float3 below = x - c.Parameters.DomainMin, above = c.Parameters.DomainMax - x;
             float weight = s.x * (k.NoSlipWallIntegral(below.x) + k.NoSlipWallIntegral(above.x))
                 + s.y * (k.NoSlipWallIntegral(below.y) + k.NoSlipWallIntegral(above.y))

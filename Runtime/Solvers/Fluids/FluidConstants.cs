@@ -55,6 +55,8 @@ namespace SoftBodyDynamics.Solvers
         public readonly float3 Period;
         /// <summary>1 / <see cref="Period"/> on the periodic axes, 0 on the others (1/m).</summary>
         public readonly float3 InversePeriod;
+        /// <summary>The no-slip share of the domain faces per axis (<see cref="FluidParameters.DomainNoSlip"/>), 0 on periodic axes (they have no faces).</summary>
+        public readonly float3 FaceNoSlip;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
 
@@ -84,16 +86,14 @@ namespace SoftBodyDynamics.Solvers
             float3 extent = Parameters.DomainMax - Parameters.DomainMin;
             Period = new float3(periodic.x ? extent.x : 0f, periodic.y ? extent.y : 0f, periodic.z ? extent.z : 0f);
             InversePeriod = new float3(periodic.x ? 1f / extent.x : 0f, periodic.y ? 1f / extent.y : 0f, periodic.z ? 1f / extent.z : 0f);
+            FaceNoSlip = math.select(Parameters.DomainNoSlip, float3.zero, periodic);
         }
 
         /// <summary>
-        /// The offset <paramref name="d"/> = xᵢ − xⱼ between the nearest images on the periodic axes (minimum image: each
-        /// component within half a period); unchanged on the other axes. Callers test <see cref="IsPeriodic"/> first.
+        /// xᵢ − xⱼ, between the nearest images on the periodic axes (<see cref="NearestImageOffset"/>); the hot passes take the
+        /// offset as a type parameter instead.
         /// </summary>
-        public float3 MinimumImage(float3 d) => d - Period * math.round(d * InversePeriod);
-
-        /// <summary>xᵢ − xⱼ, between the nearest images when the domain is periodic.</summary>
-        public float3 Offset(float3 xi, float3 xj) => IsPeriodic ? MinimumImage(xi - xj) : xi - xj;
+        public float3 Offset(float3 xi, float3 xj) => IsPeriodic ? NearestImageOffset.Apply(xi - xj, Period, InversePeriod) : xi - xj;
 
         /// <summary>
         /// <paramref name="x"/> moved by whole periods into [DomainMin, DomainMax) on the periodic axes; the other axes are

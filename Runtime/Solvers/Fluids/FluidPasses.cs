@@ -169,7 +169,6 @@ namespace SoftBodyDynamics.Solvers
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions;
             ReadOnlySpan<int> neighbours = s.Neighbours;
-            bool periodic = c.IsPeriodic;
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
@@ -178,9 +177,7 @@ namespace SoftBodyDynamics.Solvers
                 ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
                 for (int n = 0; n < list.Length; n++)
                 {
-                    float3 d = xi - x[list[n]];
-                    if (periodic)
-                        d = c.MinimumImage(d);
+                    float3 d = c.Offset(xi, x[list[n]]);
                     float q = h2 - (d.x * d.x + d.y * d.y + d.z * d.z);
                     if (q > 0f)
                         sum += q * q * q;

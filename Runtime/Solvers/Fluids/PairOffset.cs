@@ -19,7 +19,7 @@ namespace SoftBodyDynamics.Solvers
         public float3 Of(float3 xi, float3 xj) => xi - xj;
     }
 
-    /// <summary>The offset between nearest images on the periodic axes (<see cref="FluidConstants.MinimumImage"/>).</summary>
+    /// <summary>The offset between nearest images on the periodic axes (minimum image: each component within half a period).</summary>
     public struct NearestImageOffset : IPairOffset
     {
         readonly float3 m_Period, m_InversePeriod;
@@ -30,10 +30,9 @@ namespace SoftBodyDynamics.Solvers
             m_InversePeriod = c.InversePeriod;
         }
 
-        public float3 Of(float3 xi, float3 xj)
-        {
-            float3 d = xi - xj;
-            return d - m_Period * math.round(d * m_InversePeriod);
-        }
+        public float3 Of(float3 xi, float3 xj) => Apply(xi - xj, m_Period, m_InversePeriod);
+
+        /// <summary><paramref name="d"/> moved by whole periods (<paramref name="period"/>, 0 on an axis that is not periodic, and its inverse) to the nearest image.</summary>
+        public static float3 Apply(float3 d, float3 period, float3 inversePeriod) => d - period * math.round(d * inversePeriod);
     }
 }

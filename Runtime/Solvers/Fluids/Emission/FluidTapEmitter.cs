@@ -166,9 +166,7 @@ namespace SoftBodyDynamics.Solvers
             for (int r = 0; r < rows.Count; r++)
                 for (int j = rows.Begin(r); j < rows.End(r); j++)
                 {
-                    float3 d = p.Positions[j] - x;
-                    if (c.IsPeriodic)
-                        d = c.MinimumImage(d);
+                    float3 d = c.Offset(p.Positions[j], x);
                     if (math.lengthsq(d) < minDistance2)
                         return true;
                 }
