@@ -77,6 +77,7 @@ float4 _Colliding;       // x collider friction μ, yzw the domain faces' μ per
 float4 _Period;          // xyz the domain's extent on its periodic axes (m), 0 on the others; w 1 when any axis is periodic
 float4 _InversePeriod;   // xyz 1 / the period on the periodic axes (1/m), 0 on the others; w unused
 float4 _NoSlip;          // xyz no-slip share of the domain faces per axis (0 on periodic axes); w the colliders' share
+float4 _Renormalization; // x gradient trace scale −κ∇·m·C_spiky, y the walls' trace scale κ_T, z largest renormalization, w unused
 
 bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 

@@ -28,11 +28,12 @@ int4 AxisRanges(float u, int n, bool periodic, float period)
     return r;
 }
 
-// ρ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored and counted against the bound.
-float StoreDensity(uint i, float3 xi, float kernelSum)
+// ρ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored and counted against the bound; also the walls'
+// share of the gradient trace.
+float StoreDensity(uint i, float3 xi, float kernelSum, out float wallTrace)
 {
     float wall; float3 push;
-    SampleWalls(xi, wall, push);
+    SampleWalls(xi, wall, push, wallTrace);
     float rho = _Material.x * _Kernel.z * kernelSum + _Material.y * wall;
     _Densities[i] = rho;
     float ratio = rho / _Material.y;
@@ -41,8 +42,16 @@ float StoreDensity(uint i, float3 xi, float kernelSum)
     return rho;
 }
 
+// FluidConstants.GradientRenormalization: 3 / the corrected gradient trace, clamped to 1/limit … limit.
+float GradientRenormalization(float spikySum, float rho, float wallTrace)
+{
+    float trace = _Renormalization.x * spikySum / rho + wallTrace;
+    return clamp(3.0 / trace, 1.0 / _Renormalization.z, _Renormalization.z);
+}
+
 // Müller 2003 eq. 3 with the neighbour list; weakly compressible adds the Tait pressure (Becker & Teschner 2007,
-// eq. 6) of the density clamped to at least ρ₀ and the bulk-viscous pressure, stored as p/ρ².
+// eq. 6) of the density clamped to at least ρ₀ and the bulk-viscous pressure, stored as κᵢ·p/ρ² with κᵢ the
+// gradient renormalization.
 [numthreads(FLUID_GROUP, 1, 1)]
 void Density(uint3 id : SV_DispatchThreadID)
 {
@@ -56,7 +65,8 @@ void Density(uint3 id : SV_DispatchThreadID)
     int y0 = max(c.y - 2, 0), y1 = min(c.y + 2, d.y - 1);
     int z0 = max(c.z - 2, 0), z1 = min(c.z + 2, d.z - 1);
     uint listStart = i * MAX_NEIGHBOURS, found = 0, overflow = 0;
-    float sum = 0.0, divergence = 0.0;
+    float sum = 0.0, divergence = 0.0, spiky = 0.0;
+    bool tait = _Flags.x != 0;
     bool bulk = _Flags.x != 0 && _Smoothing.w > 0.0;
     float3 vi = bulk ? _Velocities[i].xyz : float3(0.0, 0.0, 0.0);
     // The cells within h along each axis as two ranges each (the second empty unless a periodic axis wraps).
@@ -86,6 +96,12 @@ void Density(uint3 id : SV_DispatchThreadID)
             if (!(q > 0.0)) continue;
             sum += q * q * q;
             if (j == i) continue;
+            if (tait)
+            {
+                float distance = sqrt(h2 - q);
+                float hr = _Kernel.x - distance;
+                spiky += hr * hr * distance;
+            }
             if (bulk) divergence += dot(vi - _Velocities[j].xyz, r) * (q * q);
             if (found < MAX_NEIGHBOURS) _Neighbours[listStart + found++] = j;
             else overflow++;
@@ -93,8 +109,9 @@ void Density(uint3 id : SV_DispatchThreadID)
     }
     _NeighbourCounts[i] = found;
     if (overflow > 0) InterlockedAdd(_Stats[STAT_NEIGHBOUR_OVERFLOW], overflow);
-    float rho = StoreDensity(i, xi, sum);
-    if (_Flags.x != 0)
+    float wallTrace;
+    float rho = StoreDensity(i, xi, sum, wallTrace);
+    if (tait)
     {
         float rho0 = _Material.y;
         float rc = max(rho, rho0);
@@ -103,7 +120,7 @@ void Density(uint3 id : SV_DispatchThreadID)
         float pressure = _Material.z * (q2 * q2 * q2 * qr - 1.0);
         // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ (FluidConstants.BulkPressureScale in _Smoothing.w); the total stays ≥ 0.
         if (bulk) pressure = max(pressure - _Smoothing.w * divergence / rho, 0.0);
-        _Pressures[i] = pressure / (rc * rc);
+        _Pressures[i] = GradientRenormalization(spiky, rho, wallTrace) * pressure / (rc * rc);
     }
 }
 
@@ -123,7 +140,8 @@ void DensityFromNeighbours(uint3 id : SV_DispatchThreadID)
         float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
         if (q > 0.0) sum += q * q * q;
     }
-    StoreDensity(i, xi, sum);
+    float wallTrace;
+    StoreDensity(i, xi, sum, wallTrace);
 }
 
 #endif

@@ -57,8 +57,8 @@ float4 Acceleration(uint i, bool pressureAndGravity)
                 sum += scale * H2 * CoincidentDirection(idI, (int)_Extras[j].y);
         }
         sum *= -m * _Kernel.w * _Kernel2.w;
-        float wall; float3 push;
-        SampleWalls(xi, wall, push);
+        float wall, trace; float3 push;
+        SampleWalls(xi, wall, push, trace);
         a += _Gravity.xyz + sum + rho0 * pi * push;
     }
     if (_Flags.y != 0)

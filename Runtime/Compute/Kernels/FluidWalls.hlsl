@@ -23,9 +23,19 @@ float WallGradientMagnitude(float d)
     return 30.0 / _Kernel.x * (s4 / 4.0 - s4 * s / 5.0);
 }
 
+// SphKernels.WallGradientTrace: −∫ r·∇W dV of spiky beyond a plane at distance d, (3/2)(1 − u)⁴(2u² + 2u + 1), u = d/h.
+float WallGradientTrace(float d)
+{
+    if (!(d < _Kernel.x)) return 0.0;
+    float u = max(d, 0.0) / _Kernel.x;
+    float s = 1.0 - u;
+    float s2 = s * s;
+    return 1.5 * s2 * s2 * (2.0 * u * u + 2.0 * u + 1.0);
+}
+
 // FluidBoundary.Sample: the six faces of the domain box and the colliders (each its tangent plane at the closest
-// point): the kernel's share outside the fluid, and the push Σ κG(d)·n.
-void SampleWalls(float3 x, out float densityFraction, out float3 push)
+// point): the kernel's share outside the fluid, the push Σ κG(d)·n and the gradient trace 3·(1 − Π(1 − κ_T·T(d)/3)).
+void SampleWalls(float3 x, out float densityFraction, out float3 push, out float gradientTrace)
 {
     float h = _Kernel.x, kappa = _DomainMax.w;
     float3 below = x - _DomainMin.xyz;
@@ -36,6 +46,8 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
     float inside = 1.0;
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
+    gradientTrace = 0.0;
+    float outsideTrace = 1.0;
     float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
     if (nearest >= h && _ShapeCounts.x == 0) return;
     [unroll] for (int axis = 0; axis < 3; axis++)
@@ -46,11 +58,13 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
         {
             inside *= 1.0 - kappa * WallDensityFraction(dBelow);
             push += kappa * WallGradientMagnitude(dBelow) * n;
+            outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(dBelow);
         }
         if (dAbove < h)
         {
             inside *= 1.0 - kappa * WallDensityFraction(dAbove);
             push -= kappa * WallGradientMagnitude(dAbove) * n;
+            outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(dAbove);
         }
     }
     for (uint c = 0; c < _ShapeCounts.x; c++)
@@ -61,8 +75,10 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push)
         float d = h - depth;
         inside *= 1.0 - kappa * WallDensityFraction(d);
         push += kappa * WallGradientMagnitude(d) * normal;
+        outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(d);
     }
     densityFraction = 1.0 - inside;
+    gradientTrace = 3.0 * (1.0 - outsideTrace);
 }
 
 // SphKernels.NoSlipWallIntegral: ∫(h − r)(1 + t/d) dV beyond a plane at distance d, the particle's velocity mirrored

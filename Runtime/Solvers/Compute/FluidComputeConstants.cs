@@ -11,6 +11,8 @@ namespace SoftBodyDynamics.Solvers
         public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Colliding;
         /// <summary>xyz the periodic axes' periods (0 elsewhere), w 1 when any axis is periodic; xyz their inverses; xyz the faces' no-slip shares (0 on periodic axes).</summary>
         public float4 Period, InversePeriod, NoSlip;
+        /// <summary>x <see cref="FluidConstants.GradientTraceScale"/>, y <see cref="FluidConstants.GradientWallScale"/>, z <see cref="FluidConstants.MaxGradientRenormalization"/>.</summary>
+        public float4 Renormalization;
         /// <summary>x colliders, y drains in <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeStep.PackShapes"/>).</summary>
         public int4 GridDims, Flags, ShapeCounts;
 
@@ -46,6 +48,7 @@ namespace SoftBodyDynamics.Solvers
                 Period = new float4(c.Period, c.IsPeriodic ? 1f : 0f),
                 InversePeriod = new float4(c.InversePeriod, 0f),
                 NoSlip = new float4(c.FaceNoSlip, p.WallNoSlip),
+                Renormalization = new float4(c.GradientTraceScale, c.GradientWallScale, FluidConstants.MaxGradientRenormalization, 0f),
             };
         }
 
@@ -69,6 +72,7 @@ namespace SoftBodyDynamics.Solvers
             commands.SetVector(FluidComputeGlobal.Period, Period);
             commands.SetVector(FluidComputeGlobal.InversePeriod, InversePeriod);
             commands.SetVector(FluidComputeGlobal.NoSlip, NoSlip);
+            commands.SetVector(FluidComputeGlobal.Renormalization, Renormalization);
         }
     }
 }

@@ -26,6 +26,6 @@ namespace SoftBodyDynamics.Solvers
     public enum FluidComputeGlobal : byte
     {
         GridOrigin, GridDims, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Flags, Counts, Scan, ShapeCounts, Colliding,
-        Period, InversePeriod, NoSlip,
+        Period, InversePeriod, NoSlip, Renormalization,
     }
 }

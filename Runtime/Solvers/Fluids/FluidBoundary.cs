@@ -20,13 +20,24 @@ namespace SoftBodyDynamics.Solvers
         /// κ is <see cref="FluidConstants.WallScale"/>.
         /// </summary>
         public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
-            out float densityFraction, out float3 push)
+            out float densityFraction, out float3 push) => Sample(c, colliders, x, out densityFraction, out push, out _);
+
+        /// <summary>
+        /// <see cref="Sample(in FluidConstants, ReadOnlySpan{ColliderShape}, float3, out float, out float3)"/> and the walls'
+        /// share of the gradient trace, <paramref name="gradientTrace"/> = 3·(1 − Πₖ(1 − κ_T·T(dₖ)/3)) (<see cref="SphKernels.WallGradientTrace"/>,
+        /// κ_T = <see cref="FluidConstants.GradientWallScale"/>; combined as the density fraction is, so a corner counts once), for
+        /// <see cref="FluidConstants.GradientRenormalization"/>.
+        /// </summary>
+        public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
+            out float densityFraction, out float3 push, out float gradientTrace)
         {
             SphKernels k = c.Kernels;
             float3 below = x - c.Parameters.DomainMin;
             float3 above = c.Parameters.DomainMax - x;
             float inside = 1f;
             push = float3.zero;
+            gradientTrace = 0f;
+            float outsideTrace = 1f;
             bool3 periodic = c.Parameters.Periodic;
             if (c.IsPeriodic)
             {
@@ -50,11 +61,13 @@ namespace SoftBodyDynamics.Solvers
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dBelow);
                     push += c.WallScale * k.WallGradientMagnitude(dBelow) * n;
+                    outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(dBelow);
                 }
                 if (dAbove < k.H)
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dAbove);
                     push -= c.WallScale * k.WallGradientMagnitude(dAbove) * n;
+                    outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(dAbove);
                 }
             }
             for (int w = 0; w < colliders.Length; w++)
@@ -65,8 +78,10 @@ namespace SoftBodyDynamics.Solvers
                 float d = k.H - depth;
                 inside *= 1f - c.WallScale * k.WallDensityFraction(d);
                 push += c.WallScale * k.WallGradientMagnitude(d) * normal;
+                outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(d);
             }
             densityFraction = 1f - inside;
+            gradientTrace = 3f * (1f - outsideTrace);
         }
 
         /// <summary>

@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Solvers
         public readonly Span<int> CellStart;
         /// <summary>Density ρ (kg/m³).</summary>
         public readonly Span<float> Densities;
-        /// <summary>Pressure p over ρ² (weakly compressible, m²/(s²·kg/m³)) or the constraint multiplier λ (position-based).</summary>
+        /// <summary>Pressure p over ρ² times the gradient renormalization κᵢ/κ∇ (weakly compressible, m²/(s²·kg/m³); <see cref="FluidConstants.GradientRenormalization"/>) or the constraint multiplier λ (position-based).</summary>
         public readonly Span<float> Pressures;
         /// <summary>Float scratch for reordering.</summary>
         public readonly Span<float> Floats;

@@ -91,7 +91,8 @@ namespace SoftBodyDynamics.Solvers
         /// Density ρᵢ = Σⱼ m·W_poly6(|xᵢ − xⱼ|) + ρ₀·Σ_walls Φ(d) (Müller 2003, eq. 3, walls in <see cref="FluidBoundary"/>)
         /// and the neighbour list of each slot. Weakly compressible: the Tait pressure (Becker &amp; Teschner 2007,
         /// eq. 6) p = B·((ρ/ρ₀)^γ − 1) of the density clamped to at least ρ₀ (no negative pressure at the free
-        /// surface, where the kernel lacks neighbours; SPlisHSPlasH clamps the same way), stored as p/ρ².
+        /// surface, where the kernel lacks neighbours; SPlisHSPlasH clamps the same way), stored as κᵢ·p/ρ² with κᵢ the
+        /// particle's gradient renormalization (<see cref="FluidConstants.GradientRenormalization"/>).
         /// </summary>
         public static void Density(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
             int start, int end, ref FluidPassCounters counters)
@@ -120,7 +121,8 @@ namespace SoftBodyDynamics.Solvers
                 int listStart = i * cap, found = 0;
                 // Σ (h² − r²)³ over neighbours; the poly6 coefficient is applied once. With bulk viscosity also
                 // Σ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)², the poly6-gradient divergence up to its factor (FluidConstants.BulkPressureScale).
-                float sum = 0f, divergence = 0f;
+                // Weakly compressible also Σ (h − r)²·r, the spiky gradient's trace up to its factor (GradientRenormalization).
+                float sum = 0f, divergence = 0f, spiky = 0f;
                 float3 vi = bulk ? velocities[i] : float3.zero;
                 for (int r = 0; r < rows.Count; r++)
                 {
@@ -134,6 +136,12 @@ namespace SoftBodyDynamics.Solvers
                         sum += q * q * q;
                         if (j == i)
                             continue;
+                        if (tait)
+                        {
+                            float distance = math.sqrt(h2 - q);
+                            float hr = k.H - distance;
+                            spiky += hr * hr * distance;
+                        }
                         if (bulk)
                             divergence += math.dot(vi - velocities[j], d) * (q * q);
                         if (found < cap)
@@ -143,17 +151,15 @@ namespace SoftBodyDynamics.Solvers
                     }
                 }
                 s.NeighbourCounts[i] = found;
-                float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters);
+                float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters, out float wallTrace);
                 if (tait)
                 {
                     float rc = math.max(rho, rho0);
-                    float qr = rc / rho0;
-                    float q2 = qr * qr;
-                    float pressure = c.TaitStiffness * (q2 * q2 * q2 * qr - 1f);
+                    float pressure = c.TaitPressure(rho);
                     if (bulk)
                         // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ; the total stays ≥ 0 like the Tait pressure, so expansion never pulls.
                         pressure = math.max(pressure - c.BulkPressureScale * divergence / rho, 0f);
-                    s.Pressures[i] = pressure / (rc * rc);
+                    s.Pressures[i] = c.GradientRenormalization(spiky, rho, wallTrace) * pressure / (rc * rc);
                 }
             }
         }
@@ -182,19 +188,20 @@ namespace SoftBodyDynamics.Solvers
                     if (q > 0f)
                         sum += q * q * q;
                 }
-                StoreDensity(c, colliders, s, i, xi, sum, ref counters);
+                StoreDensity(c, colliders, s, i, xi, sum, ref counters, out _);
             }
         }
 
         /// <summary>
         /// ρᵢ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored, with the density ratio counted against the
-        /// bound; returns ρᵢ. The end of <see cref="Density"/> and <see cref="DensityFromNeighbours"/>.
+        /// bound; returns ρᵢ and the walls' share of the gradient trace. The end of <see cref="Density"/> and
+        /// <see cref="DensityFromNeighbours"/>.
         /// </summary>
         static float StoreDensity(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidScratch s, int i, float3 xi,
-            float kernelSum, ref FluidPassCounters counters)
+            float kernelSum, ref FluidPassCounters counters, out float wallTrace)
         {
             float rho0 = c.Parameters.RestDensity;
-            FluidBoundary.Sample(c, colliders, xi, out float wall, out _);
+            FluidBoundary.Sample(c, colliders, xi, out float wall, out _, out wallTrace);
             float rho = c.Mass * c.Kernels.Poly6Coefficient * kernelSum + rho0 * wall;
             s.Densities[i] = rho;
             float ratio = rho / rho0;
@@ -227,9 +234,10 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Accelerations and the velocity update vᵢ += h·aᵢ. Weakly compressible adds gravity, the symmetric pressure
-        /// term −Σⱼ m·(pᵢ/ρᵢ² + pⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992)
+        /// term −Σⱼ m·(κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992;
+        /// κ the per-particle renormalization stored with the pressure)
         /// with Monaghan's artificial viscosity Πᵢⱼ (Becker &amp; Teschner 2007, eq. 11) and the walls'
-        /// ρ₀·(pᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
+        /// ρ₀·(κᵢpᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
         /// <see cref="FluidParameters.Cohesion"/>. Writes vᵢ + h·aᵢ to <paramref name="destination"/> (neighbours'
         /// velocities are read). Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
         /// </summary>
