@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # All the tests: NUnit solver tests (the same files Unity runs), conformance tests of the Unity.Mathematics
-# stand-in, the GPU kernels on lavapipe against the CPU solver, package lint, type-check of the Unity side, shader check (+ its self-test), a quick run of the
+# stand-in, the GPU kernels on lavapipe against the CPU solver, package lint, type-check of the Unity side, Burst
+# compatibility of what the Burst entry points reach (+ its self-test), shader check (+ its self-test), a quick run of the
 # mesh write-back timing and a quick smoke run of the main job.
 # Ends with one line "N passed, N failed" and exits non-zero on any failure.
 set -uo pipefail
@@ -72,6 +73,10 @@ run_check lint dotnet run --project "Tools~/PackageLint/PackageLint.csproj" -c R
 
 section "type-check of the Unity side"
 run_check typecheck bash "Tools~/TypeCheck/typecheck.sh"
+
+section "Burst compatibility of everything a [BurstCompile] entry point reaches"
+run_check burstcheck bash "Tools~/BurstCheck/burstcheck.sh"
+run_check burstcheck-selftest bash "Tools~/BurstCheck/burstcheck.sh" --self-test
 
 section "shader check"
 run_check shadercheck bash "Tools~/ShaderCheck/shader-check.sh"
