@@ -68,7 +68,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 $"'time to round' = first time at {DropletScenario.RoundSphericity}.",
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
                 $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, " +
-                $"the WCSPH column at the default c₀ only (the 28 m/s and position-based columns take 70 and 30 s of settling here), " +
+                $"the WCSPH column at the default c₀ only (the 28 m/s and position-based columns take about 80 and 30–50 s of settling here: 600 frames at their ms per step), " +
                 $"droplets without cohesion, with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
                 "Quick run: a/10 with one setting per solver, the default-c₀ WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
