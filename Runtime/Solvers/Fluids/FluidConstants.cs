@@ -43,7 +43,7 @@ namespace SoftBodyDynamics.Solvers
         public readonly float GradientWallScale;
         /// <summary>
         /// Largest <see cref="GradientRenormalization"/> (and smallest, its inverse): a few per cent covers the settled
-        /// disorder of a fluid's interior (2.7 ± 0.9 % on a 0.4 m column), while a particle at a free surface, whose missing
+        /// disorder of a fluid's interior (about 2.7 %, ±0.9 % between particles, on a 0.4 m column), while a particle at a free surface, whose missing
         /// neighbours would ask for far more, gets only this.
         /// </summary>
         public const float MaxGradientRenormalization = 1.05f;
@@ -131,10 +131,10 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Weakly compressible: the factor κᵢ/κ∇ on particle i's pressure, 3 / tᵢ clamped to
         /// 1/<see cref="MaxGradientRenormalization"/>…<see cref="MaxGradientRenormalization"/>, with tᵢ = κ∇·Σⱼ (m/ρᵢ)·(−rᵢⱼ·∇W)
-        /// plus the walls' share: the trace of the renormalization matrix of Bonet &amp; Lok 1999 (eq. 36), so that the
+        /// plus the walls' share: the trace of Bonet &amp; Lok 1999's gradient renormalization matrix, so that the
         /// settled, slightly disordered particles differentiate a linear pressure as the rest lattice does. Applied per
         /// particle inside the symmetric pair term (κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²), momentum stays conserved.
-        /// <paramref name="spikySum"/> is Σⱼ (h − r)²·r (m³), <paramref name="wallTrace"/> the walls' κ_T·T(d) sum.
+        /// <paramref name="spikySum"/> is Σⱼ (h − r)²·r (m³), <paramref name="wallTrace"/> the walls' share (<see cref="FluidBoundary"/>'s Sample).
         /// </summary>
         public float GradientRenormalization(float spikySum, float density, float wallTrace)
         {
