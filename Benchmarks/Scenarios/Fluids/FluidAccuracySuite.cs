@@ -49,7 +49,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                        $"v = √(2g·2a) = {DamBreakScenario.ReferenceSpeed:0.00} m/s (column: 10·√(2gH) and the default {FluidParameters.Default.SpeedOfSound:0} m/s; droplet: 5 m/s). PBF: {string.Join(", ", Iterations)} iterations " +
                        $"(column: {string.Join(", ", HydrostaticIterations)}). CFL {FluidParameters.Default.CflNumber}.",
             Load = $"Gravity. Dam break: released at rest, run to T = t√(2g/a) = {DamBreakScenario.EndT} in {1000 * DamBreakScenario.FrameSeconds} ms frames; " +
-                   $"column: settled {SettleSeconds:0} s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion, " +
+                   $"column: settled {SettleSeconds:0} s in 1/60 s frames, then measured; droplet: no gravity, 2 s with no cohesion (also without viscosity), " +
                    $"flocking ({string.Join(", ", FlockingWeights)}/s²) or Akinci (γ = {string.Join(", ", AkinciTensions)}); hard cases: each its own.",
             Reference = $"Dam break: Martin & Moyce's Table 2 front ({MartinMoyce1952.T.Length} points, T = {MartinMoyce1952.T[0]}…{DamBreakScenario.LastTableT}) and " +
                         $"Table 6 residual column height ({DamBreakScenario.HeightPoints} points, τ = t√(g/a) = {MartinMoyce1952.Tau[0]}…{MartinMoyce1952.Tau[DamBreakScenario.HeightPoints - 1]}); " +
@@ -69,7 +69,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 "Hard cases: 1000 particles (one for the isolated particle); the counters are the step report's particle-substeps summed over the run.",
                 $"Default run: a/10 with every setting, a/{StandardFinestResolution} with the cheapest of each solver, " +
                 $"the WCSPH column at the default c₀ only (the 28 m/s and position-based columns take about 80 and 30–50 s of settling here: 600 frames at their ms per step), " +
-                $"droplets without cohesion, with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
+                $"droplets without cohesion (with water's viscosity and without the viscosity pass), with flocking at {FlockingWeights[0]}/s² and Akinci at γ = {AkinciTensions[0]}. " +
                 "Quick run: a/10 with one setting per solver, the default-c₀ WCSPH column settled 0.5 s, one flocking droplet for 1 s, three WCSPH hard cases.",
             },
             Details = "fluids.md#validation-and-the-study",
@@ -138,7 +138,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             bool quick = scope == RunScope.Quick, full = scope == RunScope.Full;
             FluidParameters none = Weak(5f);
             if (!quick)
+            {
                 yield return (none, "no cohesion");
+                // The same drop without the implicit viscosity pass: what water's viscosity costs (the Effects summary).
+                FluidParameters inviscid = none;
+                inviscid.Viscosity = 0f;
+                yield return (inviscid, FluidFindings.InviscidDroplet);
+            }
             foreach (float weight in full ? FlockingWeights : new[] { FlockingWeights[0] })
             {
                 FluidParameters flocking = none;

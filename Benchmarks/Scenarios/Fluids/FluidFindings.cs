@@ -5,7 +5,7 @@ using SoftBodyDynamics.Solvers;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
-    /// <summary>The fluid suites' lines in the report's summary: accuracy against cost, hard cases per solver, and what cohesion costs.</summary>
+    /// <summary>The fluid suites' lines in the report's summary: accuracy against cost, hard cases per solver, and what cohesion and viscosity cost.</summary>
     public static class FluidFindings
     {
         /// <summary>Dam-break front thresholds (in column widths a, Z = x/a): the suite's tolerance, twice it and half it.</summary>
@@ -90,15 +90,29 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return null;
         }
 
-        /// <summary>What cohesion adds per particle-substep, from the droplet rows with and without it.</summary>
+        /// <summary>The droplet row without cohesion and without the viscosity pass.</summary>
+        public const string InviscidDroplet = "no cohesion, inviscid";
+
+        /// <summary>
+        /// What cohesion and the implicit viscosity add per particle-substep, from the droplet rows with and without them
+        /// (viscosity: water's ν against the inviscid drop).
+        /// </summary>
         static IEnumerable<Finding> Cohesion(IReadOnlyList<ScenarioOutcome> droplets)
         {
-            ScenarioOutcome? none = null;
+            ScenarioOutcome? none = null, inviscid = null;
             foreach (ScenarioOutcome r in droplets)
-                if (r.Method.Contains("no cohesion"))
+                if (r.Method.EndsWith(InviscidDroplet, StringComparison.Ordinal))
+                    inviscid = r;
+                else if (r.Method.Contains("no cohesion"))
                     none = r;
             if (none == null)
                 yield break;
+            if (inviscid != null)
+                yield return new EffectFinding
+                {
+                    Effect = EffectNames.FluidViscosity,
+                    Cost = EffectCost(inviscid.Value, none.Value, "the same droplet without the viscosity pass"),
+                };
             foreach ((string effect, string key) in new[] { (EffectNames.FlockingCohesion, "flocking"), (EffectNames.AkinciCohesion, "Akinci") })
             {
                 ScenarioOutcome? with = null;
@@ -107,19 +121,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                         with = r;
                 if (with == null)
                     continue;
-                yield return new EffectFinding { Effect = effect, Cost = CohesionCost(none.Value, with.Value) };
+                yield return new EffectFinding { Effect = effect, Cost = EffectCost(none.Value, with.Value, "the same droplet without cohesion") };
             }
         }
 
-        /// <summary>"+x ns per particle-substep (+y %): z ms per frame for 10 000 particles at one substep", measured on the droplet.</summary>
-        public static string CohesionCost(ScenarioOutcome without, ScenarioOutcome with)
+        /// <summary>
+        /// "+x ns per particle-substep (+y %): z ms per frame for 10 000 particles at one substep", measured on the droplet
+        /// <paramref name="with"/> the effect against <paramref name="against"/>, the droplet <paramref name="without"/> it.
+        /// </summary>
+        public static string EffectCost(ScenarioOutcome without, ScenarioOutcome with, string against)
         {
             double delta = with.NsPerItem - without.NsPerItem;
             string setting = with.Method;
             if (delta <= 0)
-                return $"no cost above the timing noise ({F(delta)} ns per particle-substep against the droplet without cohesion; {setting})";
+                return $"no cost above the timing noise ({F(delta)} ns per particle-substep against {against}; {setting})";
             return $"+{F(delta)} ns per particle-substep (+{F(100 * delta / without.NsPerItem)} %), i.e. {F(delta * 1e4 * 1e-6)} ms per frame " +
-                   $"for 10 000 particles at one substep ({setting}, {with.Size}-particle droplet, against the same droplet without cohesion)";
+                   $"for 10 000 particles at one substep ({setting}, {with.Size}-particle droplet, against {against})";
         }
 
         static string F(double v) => v.ToString(Math.Abs(v) >= 100 ? "0" : Math.Abs(v) >= 10 ? "0.#" : "0.##", CultureInfo.InvariantCulture);

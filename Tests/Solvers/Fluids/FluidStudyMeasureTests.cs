@@ -139,5 +139,28 @@ namespace SoftBodyDynamics.Tests.Solvers
             double seconds = DamBreakScenario.EndT / Math.Sqrt(2 * 9.81 / MartinMoyce1952.ColumnWidth);
             Assert.That(suite.Cost(coarse), Is.EqualTo(500e-6 * 800 * 3000 / (60 * seconds)).Within(1e-9));
         }
+
+        [Test]
+        public void DropletRows_GiveViscosityAndCohesionTheirCostAgainstTheRightBaseline()
+        {
+            // Viscosity is priced against the inviscid drop, cohesion against the viscous drop without cohesion; a row order
+            // that puts the inviscid drop after the plain one must not make it the cohesion baseline.
+            static ScenarioOutcome Drop(string method, double ns) =>
+                new ScenarioOutcome(method, ns, new[] { new Metric("sphericity", 0.9, MetricUnit.Dimensionless) }, 1000, 1000);
+            var rows = new[]
+            {
+                Drop("WCSPH no cohesion", 1400),
+                Drop("WCSPH " + FluidFindings.InviscidDroplet, 1200),
+                Drop("WCSPH flocking (50/s², align 2/s)", 1900),
+            };
+            var costs = new Dictionary<string, string>();
+            foreach (Finding f in FluidFindings.Findings(rows))
+                if (f is EffectFinding e)
+                    costs[e.Effect] = e.Cost;
+            StringAssert.StartsWith("+200 ns per particle-substep", costs[EffectNames.FluidViscosity]);
+            StringAssert.Contains("without the viscosity pass", costs[EffectNames.FluidViscosity]);
+            StringAssert.StartsWith("+500 ns per particle-substep", costs[EffectNames.FlockingCohesion]);
+            Assert.IsFalse(costs.ContainsKey(EffectNames.AkinciCohesion), "no Akinci row, no Akinci line");
+        }
     }
 }
