@@ -47,7 +47,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
     gradientTrace = 0.0;
-    float outsideTrace = 1.0;
+    float outsideTrace = 1.0, traceScale = _Renormalization.y / 3.0;
     float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
     if (nearest >= h && _ShapeCounts.x == 0) return;
     [unroll] for (int axis = 0; axis < 3; axis++)
@@ -58,13 +58,13 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
         {
             inside *= 1.0 - kappa * WallDensityFraction(dBelow);
             push += kappa * WallGradientMagnitude(dBelow) * n;
-            outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(dBelow);
+            outsideTrace *= 1.0 - traceScale * WallGradientTrace(dBelow);
         }
         if (dAbove < h)
         {
             inside *= 1.0 - kappa * WallDensityFraction(dAbove);
             push -= kappa * WallGradientMagnitude(dAbove) * n;
-            outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(dAbove);
+            outsideTrace *= 1.0 - traceScale * WallGradientTrace(dAbove);
         }
     }
     for (uint c = 0; c < _ShapeCounts.x; c++)
@@ -75,7 +75,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
         float d = h - depth;
         inside *= 1.0 - kappa * WallDensityFraction(d);
         push += kappa * WallGradientMagnitude(d) * normal;
-        outsideTrace *= 1.0 - _Renormalization.y / 3.0 * WallGradientTrace(d);
+        outsideTrace *= 1.0 - traceScale * WallGradientTrace(d);
     }
     densityFraction = 1.0 - inside;
     gradientTrace = 3.0 * (1.0 - outsideTrace);

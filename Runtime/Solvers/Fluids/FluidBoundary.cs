@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Solvers
             float inside = 1f;
             push = float3.zero;
             gradientTrace = 0f;
-            float outsideTrace = 1f;
+            float outsideTrace = 1f, traceScale = c.GradientWallScale / 3f;
             bool3 periodic = c.Parameters.Periodic;
             if (c.IsPeriodic)
             {
@@ -61,13 +61,13 @@ namespace SoftBodyDynamics.Solvers
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dBelow);
                     push += c.WallScale * k.WallGradientMagnitude(dBelow) * n;
-                    outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(dBelow);
+                    outsideTrace *= 1f - traceScale * k.WallGradientTrace(dBelow);
                 }
                 if (dAbove < k.H)
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dAbove);
                     push -= c.WallScale * k.WallGradientMagnitude(dAbove) * n;
-                    outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(dAbove);
+                    outsideTrace *= 1f - traceScale * k.WallGradientTrace(dAbove);
                 }
             }
             for (int w = 0; w < colliders.Length; w++)
@@ -78,7 +78,7 @@ namespace SoftBodyDynamics.Solvers
                 float d = k.H - depth;
                 inside *= 1f - c.WallScale * k.WallDensityFraction(d);
                 push += c.WallScale * k.WallGradientMagnitude(d) * normal;
-                outsideTrace *= 1f - c.GradientWallScale / 3f * k.WallGradientTrace(d);
+                outsideTrace *= 1f - traceScale * k.WallGradientTrace(d);
             }
             densityFraction = 1f - inside;
             gradientTrace = 3f * (1f - outsideTrace);

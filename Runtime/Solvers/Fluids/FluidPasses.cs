@@ -410,7 +410,7 @@ namespace SoftBodyDynamics.Solvers
             ReadOnlySpan<float> densities = s.Densities;
             ReadOnlySpan<int> neighbours = s.Neighbours;
             float hk = k.H;
-            bool noSlip = math.any(c.Parameters.DomainNoSlip > 0f) || (c.Parameters.WallNoSlip > 0f && colliders.Length > 0);
+            bool noSlip = math.any(c.FaceNoSlip > 0f) || (c.Parameters.WallNoSlip > 0f && colliders.Length > 0);
             float wallWeight = c.Parameters.RestDensity / c.Mass;
             for (int i = start; i < end; i++)
             {

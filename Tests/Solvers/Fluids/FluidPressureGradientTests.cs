@@ -56,7 +56,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             }
             Assert.Greater(inside, 0);
             Assert.Greater(firstLayer, 0);
-            // The second layer: 0.5 %; edges and corners, where the walls combine by the product rule: 3.0 % at a corner.
+            // Beyond the calibrated layer the bounds are regression guards, not analysis: measured 0.5 % in the second layer
+            // and 3.0 % at a corner (the walls combine by the product rule), each bound the measurement rounded up.
             Assert.That(worstOneWall, Is.LessThan(0.01), "deeper layers off one face");
             Assert.That(worstSeveral, Is.LessThan(0.035), "edges and corners");
         }
