@@ -4,15 +4,16 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// World-level settings of every soft body, whatever its method (a singleton; optional). When it exists, every body
-    /// falls with <see cref="Gravity"/> instead of its own acceleration (e.g.
-    /// <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>)
-    /// and takes at least <see cref="MinSubsteps"/> substeps per fixed step. Without it each body uses its own values.
+    /// World-level settings of every particle body and fluid (a singleton; optional). When it exists, every body and fluid
+    /// falls with <see cref="Gravity"/> instead of its own (e.g.
+    /// <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>,
+    /// <see cref="SoftBodyDynamics.Solvers.FluidParameters.Gravity"/>), and every body takes at least
+    /// <see cref="MinSubsteps"/> substeps per fixed step (a fluid's substeps follow its CFL limit). Without it each uses its own values.
     /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
     /// </summary>
     public struct SoftBodyWorldSettings : IComponentData
     {
-        /// <summary>Acceleration of gravity for every soft body (m/s²).</summary>
+        /// <summary>Acceleration of gravity for every particle body and fluid (m/s²).</summary>
         public float3 Gravity;
         /// <summary>Fewest substeps per fixed step for every body (1–64); a body's own minimum applies if larger.</summary>
         public int MinSubsteps;
@@ -42,6 +43,13 @@ namespace SoftBodyDynamics
             body.Acceleration = Gravity;
             body.Substeps = math.max(body.Substeps, MinSubsteps);
             return body;
+        }
+
+        /// <summary>A fluid as this world steps it: the world's gravity (its substeps stay those of its CFL limit).</summary>
+        public SoftBodyDynamics.Solvers.FluidParameters Apply(SoftBodyDynamics.Solvers.FluidParameters fluid)
+        {
+            fluid.Gravity = Gravity;
+            return fluid;
         }
     }
 }

@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 using UnityEngine;
@@ -5,7 +6,7 @@ using UnityEngine;
 namespace SoftBodyDynamics.Rendering
 {
     /// <summary>
-    /// Whether a fluid of <see cref="FluidRenderSources"/> is drawn for a camera: it has particles, a usable buffer of
+    /// Whether a fluid of a world's <see cref="FluidRenderSources"/> is drawn for a camera: it has particles, a usable buffer of
     /// float4 holding them, a positive radius, and the world bounds of its spheres meet the camera's view frustum.
     /// Nothing here touches the GPU.
     /// </summary>
@@ -41,15 +42,15 @@ namespace SoftBodyDynamics.Rendering
         }
 
         /// <summary>
-        /// Whether any registered fluid is drawn for <paramref name="camera"/>; <paramref name="frustum"/> (length 6)
-        /// receives the camera's planes, so nothing is allocated.
+        /// Whether any of <paramref name="sources"/> (<see cref="FluidRenderSources.CollectAll"/>) is drawn for
+        /// <paramref name="camera"/>; <paramref name="frustum"/> (length 6) receives the camera's planes, so nothing is allocated.
         /// </summary>
-        public static bool AnyDrawn(Camera camera, Plane[] frustum)
+        public static bool AnyDrawn(Camera camera, Plane[] frustum, List<FluidRenderSource> sources)
         {
-            if (camera == null || FluidRenderSources.Count == 0)
+            if (camera == null || sources.Count == 0)
                 return false;
             GeometryUtility.CalculateFrustumPlanes(camera, frustum);
-            foreach (FluidRenderSource source in FluidRenderSources.All)
+            foreach (FluidRenderSource source in sources)
                 if (IsDrawn(source, frustum))
                     return true;
             return false;

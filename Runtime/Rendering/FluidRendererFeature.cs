@@ -1,10 +1,11 @@
+using System.Collections.Generic;
 using UnityEngine;
 using UnityEngine.Rendering.Universal;
 
 namespace SoftBodyDynamics.Rendering
 {
     /// <summary>
-    /// URP renderer feature that draws the fluids registered in <see cref="FluidRenderSources"/> as smooth screen-space
+    /// URP renderer feature that draws the fluids of every world's <see cref="FluidRenderSources"/> as smooth screen-space
     /// surfaces (<see cref="FluidSurfacePass"/>). Add it to the URP renderer, assign a <see cref="FluidRendererSettings"/>
     /// asset with both shaders, and turn on Opaque Texture and Depth Texture (Opaque Downsampling None) in the URP asset.
     /// Needs compute shaders and URP's render graph (Compatibility Mode is not supported). Preview and reflection
@@ -17,6 +18,7 @@ namespace SoftBodyDynamics.Rendering
 
         FluidSurfacePass m_Pass;
         readonly Plane[] m_Frustum = new Plane[FluidRenderVisibility.PlaneCount];
+        readonly List<FluidRenderSource> m_Sources = new List<FluidRenderSource>();
         bool m_LoggedNoCompute;
 
         public override void Create()
@@ -36,7 +38,8 @@ namespace SoftBodyDynamics.Rendering
             }
             if ((renderingData.cameraData.cameraType & (CameraType.Preview | CameraType.Reflection)) != 0)
                 return;
-            if (!FluidRenderVisibility.AnyDrawn(renderingData.cameraData.camera, m_Frustum))
+            FluidRenderSources.CollectAll(m_Sources);
+            if (!FluidRenderVisibility.AnyDrawn(renderingData.cameraData.camera, m_Frustum, m_Sources))
                 return;
             m_Pass ??= new FluidSurfacePass();
             m_Pass.Setup(settings);

@@ -53,6 +53,8 @@ namespace SoftBodyDynamics.Rendering
         readonly Dictionary<FluidRenderSource, FluidSurfaceResources> m_Resources = new Dictionary<FluidRenderSource, FluidSurfaceResources>();
         readonly Dictionary<FluidRenderSource, string> m_ReportedProblems = new Dictionary<FluidRenderSource, string>();
         readonly List<FluidRenderSource> m_Stale = new List<FluidRenderSource>();
+        // Every world's sources, collected once per camera frame.
+        readonly List<FluidRenderSource> m_Sources = new List<FluidRenderSource>();
         readonly Plane[] m_Frustum = new Plane[FluidRenderVisibility.PlaneCount];
         FluidRendererSettings m_Settings;
         FluidSurfaceKernels m_Kernels;
@@ -110,7 +112,8 @@ namespace SoftBodyDynamics.Rendering
                 SceneDepth = sceneDepth,
                 Target = resources.activeColorTexture,
             };
-            foreach (FluidRenderSource source in FluidRenderSources.All)
+            FluidRenderSources.CollectAll(m_Sources);
+            foreach (FluidRenderSource source in m_Sources)
                 if (FluidRenderVisibility.IsDrawn(source, m_Frustum))
                     RecordSource(renderGraph, source, frame);
             ReleaseUnregistered();
@@ -119,11 +122,11 @@ namespace SoftBodyDynamics.Rendering
         /// <summary>Releases the buffers of fluids that are no longer registered.</summary>
         void ReleaseUnregistered()
         {
-            if (m_Resources.Count <= FluidRenderSources.Count)
+            if (m_Resources.Count <= m_Sources.Count)
                 return;
             m_Stale.Clear();
             foreach (FluidRenderSource source in m_Resources.Keys)
-                if (!IsRegistered(source))
+                if (!m_Sources.Contains(source))
                     m_Stale.Add(source);
             foreach (FluidRenderSource source in m_Stale)
             {
@@ -131,14 +134,6 @@ namespace SoftBodyDynamics.Rendering
                 m_Resources.Remove(source);
                 m_ReportedProblems.Remove(source);
             }
-        }
-
-        static bool IsRegistered(FluidRenderSource source)
-        {
-            foreach (FluidRenderSource registered in FluidRenderSources.All)
-                if (registered == source)
-                    return true;
-            return false;
         }
 
         /// <summary>What every fluid of one camera's frame shares.</summary>

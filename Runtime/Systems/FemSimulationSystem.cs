@@ -14,29 +14,27 @@ namespace SoftBodyDynamics
     /// Burst jobs, one body per job index: bodies with <see cref="SoftBodyUninitialized"/> enabled get their buffers
     /// sized (nodes, <see cref="FemWarmStart"/>s and <see cref="FemElementRotation"/>s) and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="FemSolver.Initialize"/>);
     /// pending <see cref="SoftBodyImpulse"/>s are applied; then <see cref="FemSolver.Step"/>, the same function
-    /// the .NET tests call, advances every body against all <see cref="SoftBodyCollider"/>s. A
+    /// the .NET tests call, advances every body against the step's collider world (<see cref="ColliderWorldShape"/>). A
     /// <see cref="SoftBodyWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
     /// matching. The entity's <see cref="LocalTransform"/> follows the body and <see cref="ParticleBodyState"/> holds the
     /// shared report and <see cref="FemDiagnostics"/> the FEM specifics; a NaN-guard reset logs a warning naming the entity and the particle.
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [BurstCompile]
     public partial struct FemSimulationSystem : ISystem
     {
-        EntityQuery m_Colliders;
-
         [BurstCompile]
         public void OnCreate(ref SystemState state)
         {
             state.RequireForUpdate<FemShape>();
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            state.RequireForUpdate<ColliderWorldShape>();
         }
 
         [BurstCompile]
         public void OnUpdate(ref SystemState state)
         {
             bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+            NativeArray<ColliderShape> colliders = SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Reinterpret<ColliderShape>().AsNativeArray();
             new InitializeJob().ScheduleParallel();
             new ApplyImpulseJob().ScheduleParallel();
             new StepJob
@@ -46,7 +44,6 @@ namespace SoftBodyDynamics
                 HasWorldSettings = hasWorld,
                 World = world,
             }.ScheduleParallel();
-            colliders.Dispose(state.Dependency);
         }
 
         static System.Span<float3> AsSpan(DynamicBuffer<FemWarmStart> buffer) =>
@@ -99,8 +96,8 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct StepJob : IJobEntity
         {
-            /// <summary>Every static collider of the world, gathered this step.</summary>
-            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
+            /// <summary>The step's collider world (<see cref="ColliderWorldSystem"/>).</summary>
+            [ReadOnly] public NativeArray<ColliderShape> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
             /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
@@ -125,7 +122,7 @@ namespace SoftBodyDynamics
                     AsSpan(rotations), scratch.AsSpan(), elementScratch.AsSpan(), AsSpan(warmStart));
                 FemParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
                 FemStepReport full = FemSolver.Step(blob.AsModel(), parameters,
-                    Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
+                    Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();
                 elementScratch.Dispose();
 

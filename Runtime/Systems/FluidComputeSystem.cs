@@ -18,7 +18,10 @@ namespace SoftBodyDynamics
     /// The live count and removal totals come back asynchronously; the particles come back into the entity buffers as
     /// <see cref="FluidSettings.Readback"/> says, never stalling the frame. Runs only while a fluid has a compute shader.
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
+    [UpdateAfter(typeof(SoftBodySimulationSystem))]
+    [UpdateAfter(typeof(MassSpringSimulationSystem))]
+    [UpdateAfter(typeof(FemSimulationSystem))]
     [UpdateBefore(typeof(FluidSimulationSystem))]
     public partial class FluidComputeSystem : SystemBase
     {
@@ -36,13 +39,16 @@ namespace SoftBodyDynamics
         readonly Dictionary<Entity, Run> m_Runs = new Dictionary<Entity, Run>();
         readonly HashSet<Entity> m_Declined = new HashSet<Entity>();
         readonly List<Entity> m_Gone = new List<Entity>();
-        EntityQuery m_Fluids, m_Colliders, m_Taps, m_Drains;
+        EntityQuery m_Fluids, m_Taps, m_Drains;
+        FluidRenderSources m_Sources;
 
         protected override void OnCreate()
         {
+            // The world's renderer hand-off, held by its surface source system (created here if the world lacks it).
+            m_Sources = World.GetOrCreateSystemManaged<FluidSurfaceSourceSystem>().Sources;
             RequireForUpdate<FluidComputeShader>();
             m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime, FluidComputeShader>().Build();
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            RequireForUpdate<ColliderWorldShape>();
             m_Taps = SystemAPI.QueryBuilder().WithAll<FluidTap>().Build();
             m_Drains = SystemAPI.QueryBuilder().WithAll<FluidDrainVolume>().Build();
         }
@@ -53,16 +59,18 @@ namespace SoftBodyDynamics
             float dt = SystemAPI.Time.DeltaTime;
             EntityManager m = EntityManager;
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
-            var inputs = FluidFrameInputs.Gather(m_Colliders, m_Taps, m_Drains);
+            var inputs = FluidFrameInputs.Gather(SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true), m_Taps, m_Drains);
             ReleaseRemoved(m);
+            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
             for (int f = 0; f < fluids.Length; f++)
             {
                 Entity fluid = fluids[f];
-                FluidSettings settings = m.GetComponentData<FluidSettings>(fluid);
+                // The world's gravity is part of the constants a fluid is taken onto the GPU with.
+                FluidSettings settings = FluidSimulationSystem.WorldApplied(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
                 if (!m_Runs.TryGetValue(fluid, out Run run) && !TryTake(m, fluid, settings, out run))
                     continue;
                 FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
-                StepOnGpu(m, fluid, settings, ref runtime, run, inputs, dt);
+                StepOnGpu(m, fluid, settings, ref runtime, run, inputs, m_Sources, dt);
                 m.SetComponentData(fluid, runtime);
             }
             fluids.Dispose();
@@ -120,12 +128,12 @@ namespace SoftBodyDynamics
 
         /// <summary>Colliders and drains, the taps' spawns, the step, then the read-backs the settings ask for.</summary>
         static void StepOnGpu(EntityManager m, Entity fluid, in FluidSettings settings, ref FluidRuntime runtime, Run run,
-            in FluidFrameInputs inputs, float dt)
+            in FluidFrameInputs inputs, FluidRenderSources sources, float dt)
         {
             FluidComputeSolver solver = run.Solver;
             var drains = new NativeArray<FluidDrain>(inputs.Drains.Length, Allocator.Temp);
             int drainCount = FluidSystemFrame.DrainsOf(fluid, inputs.Drains, drains);
-            solver.SetShapes(inputs.Colliders.Reinterpret<ColliderShape>(), drains.GetSubArray(0, drainCount));
+            solver.SetShapes(inputs.Colliders, drains.GetSubArray(0, drainCount));
             // As on the CPU (FluidFrame.DrainAndEmit): drains mark first, then the taps spawn, then the step.
             solver.Drain();
             FluidFrameReport frame = run.Spawns.Emit(m, fluid, run.Constants, ref runtime, solver, inputs.Taps, inputs.TapEntities,
@@ -133,7 +141,7 @@ namespace SoftBodyDynamics
             frame.Step.Substeps = solver.Step(dt);
             runtime.LastFrame = frame;
             if (m.HasComponent<FluidSurface>(fluid))
-                RegisterForRenderer(fluid, settings, m.GetComponentData<FluidSurface>(fluid), solver);
+                RegisterForRenderer(fluid, settings, m.GetComponentData<FluidSurface>(fluid), solver, sources);
             ReadBack(m, fluid, settings, ref runtime, run);
             drains.Dispose();
         }
@@ -142,16 +150,17 @@ namespace SoftBodyDynamics
         /// The renderer's buffer (<see cref="FluidComputeSolver.PackRender"/>: every slot, NaN beyond the live particles,
         /// so no live count is needed on the CPU) and the fluid's domain as its bounds.
         /// </summary>
-        static void RegisterForRenderer(Entity fluid, in FluidSettings settings, in FluidSurface surface, FluidComputeSolver solver)
+        static void RegisterForRenderer(Entity fluid, in FluidSettings settings, in FluidSurface surface, FluidComputeSolver solver,
+            FluidRenderSources sources)
         {
             solver.PackRender();
-            FluidRenderSource source = FluidRenderSources.Get(fluid) ?? new FluidRenderSource();
+            FluidRenderSource source = sources.Get(fluid) ?? new FluidRenderSource();
             source.Particles = solver.Buffer(FluidComputeBuffer.RenderParticles);
             source.Count = solver.Capacity;
             source.WorldBounds = FluidRenderSource.SphereBounds(settings.Parameters.DomainMin, settings.Parameters.DomainMax, surface.ParticleRadius);
             source.ParticleRadius = surface.ParticleRadius;
             source.Look = surface.Look;
-            FluidRenderSources.Set(fluid, source);
+            sources.Set(fluid, source);
         }
 
         /// <summary>
@@ -205,7 +214,7 @@ namespace SoftBodyDynamics
                     m_Gone.Add(pair.Key);
             foreach (Entity e in m_Gone)
             {
-                FluidRenderSources.Remove(e);
+                m_Sources.Remove(e);
                 m_Runs[e].Solver.Dispose();
                 m_Runs[e].Spawns.Dispose();
                 m_Runs.Remove(e);
@@ -216,7 +225,7 @@ namespace SoftBodyDynamics
         {
             foreach (var pair in m_Runs)
             {
-                FluidRenderSources.Remove(pair.Key);
+                m_Sources.Remove(pair.Key);
                 pair.Value.Solver.Dispose();
                 pair.Value.Spawns.Dispose();
             }

@@ -28,25 +28,46 @@ namespace SoftBodyDynamics
     }
 
     /// <summary>
-    /// The fluids the renderer draws this frame, by fluid entity: filled by <see cref="FluidSurfaceSourceSystem"/> (CPU
-    /// fluids) and <see cref="FluidComputeSystem"/> (GPU fluids) for fluids with a <see cref="FluidSurface"/>, read by the
-    /// URP Fluid Renderer Feature. The buffers belong to the systems that set them.
+    /// The fluids one world's renderer hand-off holds, by fluid entity: held by the world's
+    /// <see cref="FluidSurfaceSourceSystem"/> (<see cref="Of"/>), filled by it (CPU fluids) and by
+    /// <see cref="FluidComputeSystem"/> (GPU fluids) for fluids with a <see cref="FluidSurface"/>, read by the URP Fluid
+    /// Renderer Feature through <see cref="CollectAll"/>. Entities of different worlds never share an entry, and a disposed
+    /// world takes its sources with it. The buffers belong to the systems that set them.
     /// </summary>
-    public static class FluidRenderSources
+    public sealed class FluidRenderSources
     {
-        static readonly Dictionary<Entity, FluidRenderSource> s_Sources = new Dictionary<Entity, FluidRenderSource>();
+        readonly Dictionary<Entity, FluidRenderSource> m_Sources = new Dictionary<Entity, FluidRenderSource>();
 
         /// <summary>Adds or replaces the fluid's source.</summary>
-        public static void Set(Entity fluid, FluidRenderSource source) => s_Sources[fluid] = source;
+        public void Set(Entity fluid, FluidRenderSource source) => m_Sources[fluid] = source;
 
-        public static void Remove(Entity fluid) => s_Sources.Remove(fluid);
+        public void Remove(Entity fluid) => m_Sources.Remove(fluid);
 
         /// <summary>The fluid's source, or null.</summary>
-        public static FluidRenderSource Get(Entity fluid) => s_Sources.TryGetValue(fluid, out FluidRenderSource s) ? s : null;
+        public FluidRenderSource Get(Entity fluid) => m_Sources.TryGetValue(fluid, out FluidRenderSource s) ? s : null;
 
         /// <summary>Every registered source.</summary>
-        public static Dictionary<Entity, FluidRenderSource>.ValueCollection All => s_Sources.Values;
+        public Dictionary<Entity, FluidRenderSource>.ValueCollection All => m_Sources.Values;
 
-        public static int Count => s_Sources.Count;
+        public int Count => m_Sources.Count;
+
+        /// <summary>The sources of <paramref name="world"/>, or null when it has no <see cref="FluidSurfaceSourceSystem"/>.</summary>
+        public static FluidRenderSources Of(World world) =>
+            world != null && world.IsCreated ? world.GetExistingSystemManaged<FluidSurfaceSourceSystem>()?.Sources : null;
+
+        /// <summary>Replaces the content of <paramref name="into"/> with the sources of every live world (no allocation once it has grown).</summary>
+        public static void CollectAll(List<FluidRenderSource> into)
+        {
+            into.Clear();
+            World.NoAllocReadOnlyCollection<World> worlds = World.All;
+            for (int w = 0; w < worlds.Count; w++)
+            {
+                FluidRenderSources sources = Of(worlds[w]);
+                if (sources == null)
+                    continue;
+                foreach (FluidRenderSource source in sources.All)
+                    into.Add(source);
+            }
+        }
     }
 }

@@ -24,11 +24,10 @@ namespace SoftBodyDynamics
     /// in one batch.</item>
     /// </list>
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [BurstCompile]
     public partial struct FluidSimulationSystem : ISystem
     {
-        EntityQuery m_Colliders;
         EntityQuery m_Taps;
         EntityQuery m_Drains;
         EntityQuery m_Fluids;
@@ -38,7 +37,7 @@ namespace SoftBodyDynamics
         public void OnCreate(ref SystemState state)
         {
             state.RequireForUpdate<FluidSettings>();
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            state.RequireForUpdate<ColliderWorldShape>();
             m_Taps = SystemAPI.QueryBuilder().WithAll<FluidTap>().Build();
             m_Drains = SystemAPI.QueryBuilder().WithAll<FluidDrainVolume>().Build();
             m_Fluids = SystemAPI.QueryBuilder().WithAll<FluidSettings, FluidRuntime>().WithNone<FluidOnGpu>().Build();
@@ -50,17 +49,19 @@ namespace SoftBodyDynamics
         {
             float dt = SystemAPI.Time.DeltaTime;
             state.CompleteDependency();
-            var inputs = FluidFrameInputs.Gather(m_Colliders, m_Taps, m_Drains);
-            NativeArray<SoftBodyCollider> colliders = inputs.Colliders;
+            var inputs = FluidFrameInputs.Gather(SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true), m_Taps, m_Drains);
+            NativeArray<ColliderShape> colliders = inputs.Colliders;
             NativeArray<FluidTap> taps = inputs.Taps;
             NativeArray<Entity> tapEntities = inputs.TapEntities;
             NativeArray<FluidDrainVolume> drains = inputs.Drains;
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
 
+            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+
             // Entities storage first, on the main thread: it changes the world's structure.
             for (int f = 0; f < fluids.Length; f++)
             {
-                FluidSettings settings = state.EntityManager.GetComponentData<FluidSettings>(fluids[f]);
+                FluidSettings settings = WorldApplied(state.EntityManager.GetComponentData<FluidSettings>(fluids[f]), hasWorld, world);
                 if (settings.Storage == FluidStorage.Entities)
                     StepEntityFluid(ref state, fluids[f], settings, colliders, taps, tapEntities, drains, dt);
             }
@@ -71,7 +72,7 @@ namespace SoftBodyDynamics
             for (int f = 0; f < fluids.Length; f++)
             {
                 Entity fluid = fluids[f];
-                FluidSettings settings = m.GetComponentData<FluidSettings>(fluid);
+                FluidSettings settings = WorldApplied(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
                 if (settings.Storage != FluidStorage.Packed)
                     continue;
                 FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
@@ -84,9 +85,17 @@ namespace SoftBodyDynamics
             inputs.Dispose();
         }
 
+        /// <summary><paramref name="settings"/> with the world's gravity when a <see cref="SoftBodyWorldSettings"/> exists.</summary>
+        internal static FluidSettings WorldApplied(FluidSettings settings, bool hasWorld, in SoftBodyWorldSettings world)
+        {
+            if (hasWorld)
+                settings.Parameters = world.Apply(settings.Parameters);
+            return settings;
+        }
+
         /// <summary>Drains, taps, then the substeps as a job chain (<see cref="FluidJobChain"/>), completed here.</summary>
         static void StepPackedFluid(Entity fluid, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime,
-            FluidEntityArrays a, NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            FluidEntityArrays a, NativeArray<ColliderShape> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
             NativeArray<FluidDrainVolume> drains, float dt)
         {
             FluidFrameReport frame = FluidSystemFrame.DrainAndEmit(fluid, settings, constants, ref runtime, a, colliders, taps, tapEntities, drains, dt);
@@ -99,7 +108,7 @@ namespace SoftBodyDynamics
             {
                 Constants = constants,
                 Batches = batches,
-                Colliders = colliders.Reinterpret<ColliderShape>(),
+                Colliders = colliders,
                 Positions = a.Positions.Reinterpret<float3>().AsNativeArray(),
                 Velocities = a.Velocities.Reinterpret<float3>().AsNativeArray(),
                 Ages = a.Ages.Reinterpret<float>().AsNativeArray(),
@@ -134,7 +143,7 @@ namespace SoftBodyDynamics
         };
 
         /// <summary>Gather → frame → write back, destroy and instantiate in batches (see the class comment).</summary>
-        void StepEntityFluid(ref SystemState state, Entity fluid, FluidSettings settings, NativeArray<SoftBodyCollider> colliders,
+        void StepEntityFluid(ref SystemState state, Entity fluid, FluidSettings settings, NativeArray<ColliderShape> colliders,
             NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities, NativeArray<FluidDrainVolume> drains, float dt)
         {
             EntityManager m = state.EntityManager;

@@ -11,13 +11,16 @@ namespace SoftBodyDynamics
     /// Uploads each CPU fluid with a <see cref="FluidSurface"/> for the renderer once per rendered frame: its live
     /// particles' positions and attributes from the fluid's buffers (packed storage, and Entities storage whose particles
     /// the simulation gathers there) into one GraphicsBuffer, grown by doubling, with the spheres' world bounds, registered
-    /// in <see cref="FluidRenderSources"/>. GPU fluids register their own buffer (<see cref="FluidComputeSystem"/>). Runs
-    /// only while a fluid surface exists.
+    /// in this world's <see cref="Sources"/>. GPU fluids register their own buffer there (<see cref="FluidComputeSystem"/>).
+    /// Updates only while a fluid surface exists.
     /// </summary>
     [UpdateInGroup(typeof(PresentationSystemGroup))]
     public partial class FluidSurfaceSourceSystem : SystemBase
     {
         readonly Dictionary<Entity, FluidRenderSource> m_Uploads = new Dictionary<Entity, FluidRenderSource>();
+
+        /// <summary>This world's renderer hand-off: every fluid of the world the renderer draws.</summary>
+        public FluidRenderSources Sources { get; } = new FluidRenderSources();
         readonly List<Entity> m_Gone = new List<Entity>();
         EntityQuery m_Fluids;
 
@@ -58,7 +61,7 @@ namespace SoftBodyDynamics
                 source.WorldBounds = bounds;
                 source.ParticleRadius = surface.ParticleRadius;
                 source.Look = surface.Look;
-                FluidRenderSources.Set(fluid, source);
+                Sources.Set(fluid, source);
                 packed.Dispose();
             }
             fluids.Dispose();
@@ -102,8 +105,8 @@ namespace SoftBodyDynamics
             {
                 m_Uploads[e].Particles?.Release();
                 m_Uploads.Remove(e);
-                if (FluidRenderSources.Get(e) != null && !m.HasComponent<FluidOnGpu>(e))
-                    FluidRenderSources.Remove(e);
+                if (Sources.Get(e) != null && !m.HasComponent<FluidOnGpu>(e))
+                    Sources.Remove(e);
             }
         }
 
@@ -112,7 +115,7 @@ namespace SoftBodyDynamics
             foreach (var pair in m_Uploads)
             {
                 pair.Value.Particles?.Release();
-                FluidRenderSources.Remove(pair.Key);
+                Sources.Remove(pair.Key);
             }
             m_Uploads.Clear();
         }

@@ -21,18 +21,21 @@ namespace SoftBodyDynamics
         public DynamicBuffer<FluidTapRuntime> Taps;
     }
 
-    /// <summary>The scene's colliders, taps and drains, gathered once per update of a fluid system.</summary>
+    /// <summary>
+    /// The step's collider world (copied: an Entities-storage fluid's structural changes would invalidate the buffer), the
+    /// scene's taps and drains, gathered once per update of a fluid system.
+    /// </summary>
     struct FluidFrameInputs : System.IDisposable
     {
         /// <summary>For the pass jobs too (TempJob).</summary>
-        public NativeArray<SoftBodyCollider> Colliders;
+        public NativeArray<ColliderShape> Colliders;
         public NativeArray<FluidTap> Taps;
         public NativeArray<Entity> TapEntities;
         public NativeArray<FluidDrainVolume> Drains;
 
-        public static FluidFrameInputs Gather(EntityQuery colliders, EntityQuery taps, EntityQuery drains) => new FluidFrameInputs
+        public static FluidFrameInputs Gather(DynamicBuffer<ColliderWorldShape> colliders, EntityQuery taps, EntityQuery drains) => new FluidFrameInputs
         {
-            Colliders = colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob),
+            Colliders = colliders.Reinterpret<ColliderShape>().ToNativeArray(Allocator.TempJob),
             Taps = taps.ToComponentDataArray<FluidTap>(Allocator.Temp),
             TapEntities = taps.ToEntityArray(Allocator.Temp),
             Drains = drains.ToComponentDataArray<FluidDrainVolume>(Allocator.Temp),
@@ -133,7 +136,7 @@ namespace SoftBodyDynamics
         /// written back. Returns the frame report without its step.
         /// </summary>
         public static FluidFrameReport DrainAndEmit(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime,
-            FluidEntityArrays a, NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            FluidEntityArrays a, NativeArray<ColliderShape> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
             NativeArray<FluidDrainVolume> drainVolumes, float dt)
         {
             int budget = math.max(1, settings.Budget);
@@ -145,7 +148,7 @@ namespace SoftBodyDynamics
             var drainSpan = drains.AsReadOnlySpan().Slice(0, drainCount);
             if (!runtime.Prewarmed)
             {
-                FluidFrame.Prewarm(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), drainSpan, tapSet.Instances, tapSet.Bursts,
+                FluidFrame.Prewarm(constants, colliders.AsReadOnlySpan(), drainSpan, tapSet.Instances, tapSet.Bursts,
                     budget, dt, particles, scratch, ref runtime.Status);
                 runtime.Prewarmed = true;
             }
@@ -179,13 +182,13 @@ namespace SoftBodyDynamics
 
         /// <summary>A whole frame single-threaded (drains, taps, <see cref="FluidSolver.Step"/>), for Entities storage.</summary>
         public static void Run(Entity entity, in FluidSettings settings, in FluidConstants constants, ref FluidRuntime runtime, FluidEntityArrays a,
-            NativeArray<SoftBodyCollider> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
+            NativeArray<ColliderShape> colliders, NativeArray<FluidTap> taps, NativeArray<Entity> tapEntities,
             NativeArray<FluidDrainVolume> drainVolumes, float dt)
         {
             FluidFrameReport report = DrainAndEmit(entity, settings, constants, ref runtime, a, colliders, taps, tapEntities, drainVolumes, dt);
             int budget = math.max(1, settings.Budget);
             FluidScratch scratch = FluidEntityBuffers.Scratch(a.ScratchInts, a.ScratchFloats, a.ScratchVectors, budget, constants.Grid.CellCount);
-            report.Step = FluidSolver.Step(constants, colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), dt, Particles(a), scratch, ref runtime.Status);
+            report.Step = FluidSolver.Step(constants, colliders.AsReadOnlySpan(), dt, Particles(a), scratch, ref runtime.Status);
             Close(entity, ref runtime, report);
         }
     }

@@ -14,29 +14,27 @@ namespace SoftBodyDynamics
     /// Burst jobs, one body per job index: bodies with <see cref="SoftBodyUninitialized"/> enabled get their buffers
     /// sized and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="MassSpringSolver.Initialize"/>);
     /// pending <see cref="SoftBodyImpulse"/>s are applied; then <see cref="MassSpringSolver.Step"/>, the same function
-    /// the .NET tests call, advances every body against all <see cref="SoftBodyCollider"/>s. A
+    /// the .NET tests call, advances every body against the step's collider world (<see cref="ColliderWorldShape"/>). A
     /// <see cref="SoftBodyWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
     /// matching. The entity's <see cref="LocalTransform"/> follows the body and <see cref="ParticleBodyState"/> holds the
     /// report; a NaN-guard reset logs a warning naming the entity and the particle.
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [BurstCompile]
     public partial struct MassSpringSimulationSystem : ISystem
     {
-        EntityQuery m_Colliders;
-
         [BurstCompile]
         public void OnCreate(ref SystemState state)
         {
             state.RequireForUpdate<MassSpringShape>();
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            state.RequireForUpdate<ColliderWorldShape>();
         }
 
         [BurstCompile]
         public void OnUpdate(ref SystemState state)
         {
             bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+            NativeArray<ColliderShape> colliders = SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Reinterpret<ColliderShape>().AsNativeArray();
             new InitializeJob().ScheduleParallel();
             new ApplyImpulseJob().ScheduleParallel();
             new StepJob
@@ -46,7 +44,6 @@ namespace SoftBodyDynamics
                 HasWorldSettings = hasWorld,
                 World = world,
             }.ScheduleParallel();
-            colliders.Dispose(state.Dependency);
         }
 
         /// <summary>Sizes the buffers and places the rest shape at the entity's transform (mesh origin; scale reset to 1), at rest.</summary>
@@ -90,8 +87,8 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct StepJob : IJobEntity
         {
-            /// <summary>Every static collider of the world, gathered this step.</summary>
-            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
+            /// <summary>The step's collider world (<see cref="ColliderWorldSystem"/>).</summary>
+            [ReadOnly] public NativeArray<ColliderShape> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
             /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
@@ -115,7 +112,7 @@ namespace SoftBodyDynamics
                     scratch.AsSpan(), springScratch.AsSpan());
                 MassSpringParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
                 ParticleStepReport report = MassSpringSolver.Step(blob.AsModel(), parameters,
-                    Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
+                    Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();
                 springScratch.Dispose();
 

@@ -13,7 +13,7 @@ namespace SoftBodyDynamics
     /// origin; scale reset to 1) at rest with <see cref="ShapeMatchingSolver.Initialize"/>, and disables the
     /// tag. Runs first in the fixed step, so prefabs instantiated at any time start where they were placed.
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [UpdateBefore(typeof(SoftBodySimulationSystem))]
     [BurstCompile]
     public partial struct SoftBodyInitializationSystem : ISystem

@@ -10,7 +10,7 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// Steps every initialized soft body once per fixed step with <see cref="ShapeMatchingSolver.Step"/>, the
-    /// same function the .NET tests call, against all <see cref="SoftBodyCollider"/>s, gathered once per step. With a
+    /// same function the .NET tests call, against the step's collider world (<see cref="ColliderWorldShape"/>, built once per step). With a
     /// <see cref="SoftBodyWorldSettings"/> singleton, every body uses the world's gravity and at least its substeps
     /// (<see cref="SoftBodyWorldSettings.Apply"/>). One body per job
     /// index and no reductions across bodies, so results do not depend on scheduling. After the step the
@@ -18,17 +18,15 @@ namespace SoftBodyDynamics
     /// <see cref="SoftBodyState"/> holds the report, and a NaN-guard reset logs a warning naming the
     /// entity and the particle. Pending <see cref="SoftBodyImpulse"/>s are applied first.
     /// </summary>
-    [UpdateInGroup(typeof(FixedStepSimulationSystemGroup))]
+    [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [BurstCompile]
     public partial struct SoftBodySimulationSystem : ISystem
     {
-        EntityQuery m_Colliders;
-
         [BurstCompile]
         public void OnCreate(ref SystemState state)
         {
             state.RequireForUpdate<SoftBodyShape>();
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            state.RequireForUpdate<ColliderWorldShape>();
         }
 
         [BurstCompile]
@@ -36,7 +34,7 @@ namespace SoftBodyDynamics
         {
             float dt = SystemAPI.Time.DeltaTime;
             bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.TempJob);
+            NativeArray<ColliderShape> colliders = SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Reinterpret<ColliderShape>().AsNativeArray();
 
             new ApplyImpulseJob().ScheduleParallel();
             new StepJob
@@ -47,7 +45,6 @@ namespace SoftBodyDynamics
                 World = world,
                 QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>(),
             }.ScheduleParallel();
-            colliders.Dispose(state.Dependency);
         }
 
         /// <summary>Adds each enabled <see cref="SoftBodyImpulse"/> to its body's velocities, wakes the body and disables the impulse.</summary>
@@ -67,8 +64,8 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct StepJob : IJobEntity
         {
-            /// <summary>Every static collider of the world, gathered this step.</summary>
-            [ReadOnly] public NativeArray<SoftBodyCollider> Colliders;
+            /// <summary>The step's collider world (<see cref="ColliderWorldSystem"/>).</summary>
+            [ReadOnly] public NativeArray<ColliderShape> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
             /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
@@ -97,7 +94,7 @@ namespace SoftBodyDynamics
                 var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
                 ShapeMatchingParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
                 ShapeMatchingStepReport report = ShapeMatchingSolver.Step(blob.AsModel(), parameters,
-                    Colliders.Reinterpret<ColliderShape>().AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
+                    Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();
 
                 body.LastReport = report;

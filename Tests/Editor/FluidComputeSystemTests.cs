@@ -22,6 +22,7 @@ namespace SoftBodyDynamics.Tests.Editor
         World m_World;
         EntityManager m_Manager;
         SystemHandle m_Simulation;
+        SystemHandle m_ColliderWorld;
         FluidComputeSystem m_Compute;
         double m_ElapsedTime;
 
@@ -30,6 +31,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             m_World = new World("Fluid compute system tests");
             m_Manager = m_World.EntityManager;
+            m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
             m_Compute = m_World.GetOrCreateSystemManaged<FluidComputeSystem>();
             m_Simulation = m_World.CreateSystem<FluidSimulationSystem>();
             m_ElapsedTime = 0.0;
@@ -60,6 +62,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 m_ElapsedTime += k_Dt;
                 m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_ColliderWorld.Update(m_World.Unmanaged);
                 m_Compute.Update();
                 m_Simulation.Update(m_World.Unmanaged);
                 m_Manager.CompleteAllTrackedJobs();

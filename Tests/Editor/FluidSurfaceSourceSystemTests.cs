@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using NUnit.Framework;
 using SoftBodyDynamics.Solvers;
 using Unity.Core;
@@ -9,7 +10,7 @@ namespace SoftBodyDynamics.Tests.Editor
 {
     /// <summary>
     /// The renderer's sources: a CPU fluid with a <see cref="FluidSurface"/> is uploaded with its live count, look and
-    /// sphere bounds; a fluid without one is not; a destroyed fluid's source goes away.
+    /// sphere bounds; a fluid without one is not; a destroyed fluid's source goes away; each world holds its own.
     /// </summary>
     public class FluidSurfaceSourceSystemTests
     {
@@ -18,6 +19,7 @@ namespace SoftBodyDynamics.Tests.Editor
         World m_World;
         EntityManager m_Manager;
         SystemHandle m_Simulation;
+        SystemHandle m_ColliderWorld;
         FluidSurfaceSourceSystem m_Sources;
         double m_ElapsedTime;
 
@@ -26,6 +28,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             m_World = new World("Fluid surface source tests");
             m_Manager = m_World.EntityManager;
+            m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
             m_Simulation = m_World.CreateSystem<FluidSimulationSystem>();
             m_Sources = m_World.GetOrCreateSystemManaged<FluidSurfaceSourceSystem>();
             m_ElapsedTime = 0.0;
@@ -57,6 +60,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 m_ElapsedTime += k_Dt;
                 m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_ColliderWorld.Update(m_World.Unmanaged);
                 m_Simulation.Update(m_World.Unmanaged);
                 m_Manager.CompleteAllTrackedJobs();
                 m_Sources.Update();
@@ -68,7 +72,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             Entity fluid = CreateFluid(surface: true);
             Update(20);
-            FluidRenderSource source = FluidRenderSources.Get(fluid);
+            FluidRenderSource source = m_Sources.Sources.Get(fluid);
             Assert.That(source, Is.Not.Null);
             int live = m_Manager.GetComponentData<FluidRuntime>(fluid).Status.Count;
             Assert.That(live, Is.GreaterThan(0));
@@ -89,7 +93,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             Entity fluid = CreateFluid(surface: false);
             Update(5);
-            Assert.That(FluidRenderSources.Get(fluid), Is.Null);
+            Assert.That(m_Sources.Sources.Get(fluid), Is.Null);
         }
 
         [Test]
@@ -98,11 +102,60 @@ namespace SoftBodyDynamics.Tests.Editor
             Entity fluid = CreateFluid(surface: true);
             Entity other = CreateFluid(surface: true);
             Update(3);
-            Assert.That(FluidRenderSources.Get(fluid), Is.Not.Null);
+            Assert.That(m_Sources.Sources.Get(fluid), Is.Not.Null);
             m_Manager.DestroyEntity(fluid);
             Update(1);
-            Assert.That(FluidRenderSources.Get(fluid), Is.Null);
-            Assert.That(FluidRenderSources.Get(other), Is.Not.Null, "the other fluid keeps being drawn");
+            Assert.That(m_Sources.Sources.Get(fluid), Is.Null);
+            Assert.That(m_Sources.Sources.Get(other), Is.Not.Null, "the other fluid keeps being drawn");
+        }
+
+        [Test]
+        public void TwoWorlds_KeepTheirOwnSources_UnderTheSameEntityKey()
+        {
+            Entity fluid = CreateFluid(surface: true);
+            var other = new World("Fluid surface source tests, second world");
+            try
+            {
+                EntityManager otherManager = other.EntityManager;
+                SystemHandle otherColliders = other.CreateSystem<ColliderWorldSystem>();
+                SystemHandle otherSimulation = other.CreateSystem<FluidSimulationSystem>();
+                FluidSurfaceSourceSystem otherSources = other.GetOrCreateSystemManaged<FluidSurfaceSourceSystem>();
+                FluidParameters p = FluidTestEntities.BoxParameters();
+                Entity otherFluid = FluidTestEntities.Create(otherManager, new FluidSettings
+                {
+                    Parameters = p, Budget = 2000, Color = new float4(1f), Storage = FluidStorage.Packed, Backend = FluidBackend.Cpu,
+                });
+                otherManager.AddComponentData(otherFluid, new FluidSurface { Look = FluidLook.Water, ParticleRadius = 0.5f * p.ParticleSpacing });
+                FluidTestEntities.CreateTap(otherManager, otherFluid, 300f);
+                Assert.That(otherFluid, Is.EqualTo(fluid), "both worlds made the same entities in the same order");
+
+                Update(3);
+                other.SetTime(new TimeData(k_Dt, k_Dt));
+                otherColliders.Update(other.Unmanaged);
+                otherSimulation.Update(other.Unmanaged);
+                otherManager.CompleteAllTrackedJobs();
+                otherSources.Update();
+
+                FluidRenderSource mine = m_Sources.Sources.Get(fluid), theirs = otherSources.Sources.Get(otherFluid);
+                Assert.That(mine, Is.Not.Null);
+                Assert.That(theirs, Is.Not.Null);
+                Assert.That(mine, Is.Not.SameAs(theirs), "one key, two worlds, two sources");
+                Assert.That(mine.ParticleRadius, Is.EqualTo(0.7f * p.ParticleSpacing), "this world's fluid");
+                Assert.That(theirs.ParticleRadius, Is.EqualTo(0.5f * p.ParticleSpacing), "the other world's fluid");
+                Assert.That(FluidRenderSources.Of(m_World), Is.SameAs(m_Sources.Sources));
+
+                var all = new List<FluidRenderSource>();
+                FluidRenderSources.CollectAll(all);
+                Assert.That(all, Does.Contain(mine).And.Contain(theirs));
+                other.Dispose();
+                FluidRenderSources.CollectAll(all);
+                Assert.That(all, Does.Contain(mine).And.Not.Contain(theirs), "a disposed world takes its sources with it");
+            }
+            finally
+            {
+                if (other.IsCreated)
+                    other.Dispose();
+            }
         }
 
         [Test]

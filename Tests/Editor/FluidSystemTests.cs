@@ -18,6 +18,7 @@ namespace SoftBodyDynamics.Tests.Editor
         World m_World;
         EntityManager m_Manager;
         SystemHandle m_Simulation;
+        SystemHandle m_ColliderWorld;
         double m_ElapsedTime;
 
         [SetUp]
@@ -25,6 +26,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             m_World = new World("Fluid system tests");
             m_Manager = m_World.EntityManager;
+            m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
             m_Simulation = m_World.CreateSystem<FluidSimulationSystem>();
             m_ElapsedTime = 0.0;
         }
@@ -53,6 +55,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 m_ElapsedTime += k_Dt;
                 m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_ColliderWorld.Update(m_World.Unmanaged);
                 m_Simulation.Update(m_World.Unmanaged);
                 m_Manager.CompleteAllTrackedJobs();
             }

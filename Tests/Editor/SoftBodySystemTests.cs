@@ -23,6 +23,7 @@ namespace SoftBodyDynamics.Tests.Editor
         EntityManager m_Manager;
         SystemHandle m_Initialization;
         SystemHandle m_Simulation;
+        SystemHandle m_ColliderWorld;
         BlobAssetReference<SoftBodyShapeBlob> m_Shape;
         ShapeMatchingModelData m_Model;
         double m_ElapsedTime;
@@ -63,6 +64,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             m_World = new World("Soft body system tests");
             m_Manager = m_World.EntityManager;
+            m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
             m_Initialization = m_World.CreateSystem<SoftBodyInitializationSystem>();
             m_Simulation = m_World.CreateSystem<SoftBodySimulationSystem>();
             m_Model = CubeLattice();
@@ -96,6 +98,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 m_ElapsedTime += k_Dt;
                 m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_ColliderWorld.Update(m_World.Unmanaged);
                 m_Initialization.Update(m_World.Unmanaged);
                 m_Simulation.Update(m_World.Unmanaged);
                 m_Manager.CompleteAllTrackedJobs();

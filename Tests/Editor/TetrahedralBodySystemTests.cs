@@ -23,6 +23,7 @@ namespace SoftBodyDynamics.Tests.Editor
         SystemHandle m_ShapeMatching;
         SystemHandle m_MassSpring;
         SystemHandle m_Fem;
+        SystemHandle m_ColliderWorld;
         readonly List<System.IDisposable> m_Blobs = new List<System.IDisposable>();
         double m_ElapsedTime;
 
@@ -34,6 +35,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             m_World = new World("Tetrahedral system tests");
             m_Manager = m_World.EntityManager;
+            m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
             m_ShapeMatching = m_World.CreateSystem<SoftBodySimulationSystem>();
             m_MassSpring = m_World.CreateSystem<MassSpringSimulationSystem>();
             m_Fem = m_World.CreateSystem<FemSimulationSystem>();
@@ -86,6 +88,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 m_ElapsedTime += k_Dt;
                 m_World.SetTime(new TimeData(m_ElapsedTime, k_Dt));
+                m_ColliderWorld.Update(m_World.Unmanaged);
                 m_MassSpring.Update(m_World.Unmanaged);
                 m_Fem.Update(m_World.Unmanaged);
                 m_Manager.CompleteAllTrackedJobs();

@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using NUnit.Framework;
 using SoftBodyDynamics.Rendering;
 using Unity.Entities;
@@ -11,8 +12,6 @@ namespace SoftBodyDynamics.Tests.Editor.Rendering
     /// </summary>
     public class FluidRenderVisibilityTests
     {
-        // A key no fluid system uses, so the registry's other entries are left alone.
-        static readonly Entity k_TestFluid = new Entity { Index = int.MaxValue - 7, Version = 1 };
         GameObject m_CameraObject;
         Plane[] m_Frustum;
 
@@ -34,7 +33,6 @@ namespace SoftBodyDynamics.Tests.Editor.Rendering
         public void TearDown()
         {
             Object.DestroyImmediate(m_CameraObject);
-            FluidRenderSources.Remove(k_TestFluid);
         }
 
         [Test]
@@ -113,9 +111,9 @@ namespace SoftBodyDynamics.Tests.Editor.Rendering
             Camera camera = m_CameraObject.GetComponent<Camera>();
             var planes = new Plane[FluidRenderVisibility.PlaneCount];
 
-            FluidRenderSources.Set(k_TestFluid, new FluidRenderSource { Count = 100, ParticleRadius = 0.01f, WorldBounds = k_InFront });
-            Assert.That(FluidRenderVisibility.AnyDrawn(camera, planes), Is.False, "a fluid without a buffer");
-            Assert.That(FluidRenderVisibility.AnyDrawn(null, planes), Is.False, "no camera");
+            var sources = new List<FluidRenderSource> { new FluidRenderSource { Count = 100, ParticleRadius = 0.01f, WorldBounds = k_InFront } };
+            Assert.That(FluidRenderVisibility.AnyDrawn(camera, planes, sources), Is.False, "a fluid without a buffer");
+            Assert.That(FluidRenderVisibility.AnyDrawn(null, planes, sources), Is.False, "no camera");
         }
     }
 }

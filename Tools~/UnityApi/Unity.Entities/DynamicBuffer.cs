@@ -16,5 +16,8 @@ namespace Unity.Entities
         public DynamicBuffer<U> Reinterpret<U>() where U : unmanaged => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.AsNativeArray.html
         public NativeArray<T> AsNativeArray() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.ToNativeArray.html
+        // (source: Iterators/DynamicBuffer.cs, 1.4.2: public NativeArray<T> ToNativeArray(AllocatorManager.AllocatorHandle allocator))
+        public NativeArray<T> ToNativeArray(AllocatorManager.AllocatorHandle allocator) => throw null;
     }
 }

@@ -15,6 +15,9 @@ namespace Unity.Entities
         public static BufferLookup<T> GetBufferLookup<T>(bool isReadOnly = false) where T : unmanaged, IBufferElementData => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPI.TryGetSingleton.html
         public static bool TryGetSingleton<T>(out T value) where T : unmanaged, IComponentData => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPI.GetSingletonBuffer.html
+        // (source: SystemAPI.cs, 1.4.2: public static DynamicBuffer<T> GetSingletonBuffer<T>(bool isReadOnly = false) where T : unmanaged, IBufferElementData)
+        public static DynamicBuffer<T> GetSingletonBuffer<T>(bool isReadOnly = false) where T : unmanaged, IBufferElementData => throw null;
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemAPIQueryBuilder.html

@@ -11,6 +11,9 @@ namespace Unity.Entities
         public bool Enabled { get => throw null; set => throw null; }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.EntityManager.html
         public EntityManager EntityManager => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.World.html
+        // (source: ComponentSystemBase.cs, 1.4.2: public World World => m_StatePtr != null ? (World)m_StatePtr->m_World.Target : null;)
+        public World World => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.ComponentSystemBase.RequireForUpdate.html
         // (source: ComponentSystemBase.cs, 1.4.2: public void RequireForUpdate<T>())
         public void RequireForUpdate<T>() => throw null;

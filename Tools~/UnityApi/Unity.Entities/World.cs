@@ -23,6 +23,22 @@ namespace Unity.Entities
         public T GetOrCreateSystemManaged<T>() where T : ComponentSystemBase => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Dispose.html
         public void Dispose() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.IsCreated.html
+        // (source: World.cs, 1.4.2: public bool IsCreated => m_Unmanaged.IsCreated;)
+        public bool IsCreated => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.All.html
+        // (source: World.cs, 1.4.2: public static NoAllocReadOnlyCollection<World> All { get; })
+        public static NoAllocReadOnlyCollection<World> All => throw null;
+
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.NoAllocReadOnlyCollection-1.html
+        // (source: World.cs, 1.4.2: nested in World; IEnumerable<T> left out: casting it throws, the enumerator is a List's)
+        public struct NoAllocReadOnlyCollection<T>
+        {
+            // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.NoAllocReadOnlyCollection-1.Count.html
+            public int Count => throw null;
+            // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.NoAllocReadOnlyCollection-1.Item.html
+            public T this[int index] => throw null;
+        }
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.WorldFlags.html (source: Unity.Entities/World.cs)
