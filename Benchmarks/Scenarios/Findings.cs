@@ -135,6 +135,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>The effects a scene can call for, by the names the summary lists them under.</summary>
     public static class EffectNames
     {
+        public const string ShapeMatchingBody = "Shape-matching body";
+        public const string MassSpringBody = "Mass-spring body";
+        public const string FemBody = "FEM body";
+        public const string Fluid = "Fluid (SPH)";
         public const string FlockingCohesion = "Flocking cohesion (fluid)";
         public const string AkinciCohesion = "Akinci cohesion and curvature (fluid)";
         public const string FluidViscosity = "Implicit viscosity (fluid)";

@@ -15,6 +15,7 @@ namespace SoftBodyDynamics.Runner
         /// <summary>Effects a scene can call for, in summary order; an effect no suite measured reads "none yet".</summary>
         public static readonly string[] Effects =
         {
+            EffectNames.ShapeMatchingBody, EffectNames.MassSpringBody, EffectNames.FemBody, EffectNames.Fluid,
             EffectNames.FlockingCohesion, EffectNames.AkinciCohesion, EffectNames.FluidViscosity, EffectNames.FluidColliders,
             EffectNames.SoftBodyCollisions, EffectNames.Plasticity, EffectNames.FluidSoftBodyCoupling, EffectNames.SoftSoftContacts,
             EffectNames.FluidRenderer,

@@ -33,7 +33,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public ShapeMatchingParameters Parameters => m_Parameters;
 
         /// <param name="frequency">f (Hz); NaN = from <see cref="ShapeMatchingCalibration"/>.</param>
-        public ShapeMatchingMethodBody(MethodBodySetup setup, ShapeMatchingMode mode, int substeps, float cellSize, float frequency = float.NaN)
+        /// <param name="plasticity">Plastic flow of the rest shape; none by default.</param>
+        public ShapeMatchingMethodBody(MethodBodySetup setup, ShapeMatchingMode mode, int substeps, float cellSize, float frequency = float.NaN,
+            PlasticityParameters plasticity = default)
         {
             float[] masses = setup.LumpedMasses();
             ClusterSet clusters = ClusterBuilder.Build(setup.Mesh.Positions, ClusterCells * cellSize * 1.001f);
@@ -48,6 +50,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.ParticleRadius = setup.ParticleRadius;
             p.Friction = setup.Friction;
             p.Restitution = 0f;
+            p.Plasticity = plasticity;
             m_Parameters = p;
             Family = $"SM {mode.ToString().ToLowerInvariant()}";
             int n = m_Model.ParticleCount;
