@@ -167,7 +167,7 @@ namespace SoftBodyDynamics.Benchmarks
             EntityManager manager = m_World.EntityManager;
             foreach (Entity body in m_Bodies)
             {
-                SoftBodyState state = manager.GetComponentData<SoftBodyState>(body);
+                ParticleBodyState state = manager.GetComponentData<ParticleBodyState>(body);
                 state.Status.StepCount++;
                 manager.SetComponentData(body, state);
             }

@@ -98,7 +98,7 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Fewest simulation substeps per fixed step (1–64). The solver adds substeps until Frequency·2π·substep ≤ "
                  + "Max Substep Phase. More: stiffer contacts and less tunnelling, at proportional cost. Default 4.")]
         [Range(ShapeMatchingParameterValidation.MinSubsteps, ShapeMatchingParameterValidation.MaxSubsteps)]
-        public int substeps = k_Solver.Substeps;
+        public int substeps = k_Solver.Body.Substeps;
 
         [Tooltip("Largest phase ω·h (rad) of one substep; the solver uses as many substeps as that needs (up to 64). It bounds "
                  + "the error of the resting sag (about ζ·ω·h + (ω·h)²/12 relative); frequency and damping are exact at any step. "
@@ -107,7 +107,7 @@ namespace SoftBodyDynamics.Authoring
         public float maxSubstepPhase = k_Solver.MaxSubstepPhase;
 
         [Tooltip("Uniform acceleration on every particle (m/s²): gravity plus any wind-like force per mass. Default (0, −9.81, 0).")]
-        public Vector3 gravity = UnityMathConversions.ToVector3(k_Solver.Acceleration);
+        public Vector3 gravity = UnityMathConversions.ToVector3(k_Solver.Body.Acceleration);
 
         // ---- Physical material (mass-spring and FEM)
 
@@ -190,7 +190,7 @@ namespace SoftBodyDynamics.Authoring
 
         [Tooltip("Radius of every particle against colliders (m). Default 0.02 m.")]
         [Min(0f)]
-        public float particleRadius = k_Solver.ParticleRadius;
+        public float particleRadius = k_Solver.Body.ParticleRadius;
 
         [Tooltip("Coulomb friction coefficient μ against colliders (0 = ice, about 1 = rubber on concrete). Jelly 0.4.")]
         [Min(0f)]
@@ -203,17 +203,17 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Speed (m/s) at which particles that start a step inside a collider are pushed out: a body spawned inside a "
                  + "collider leaves it at this speed, whole and along one direction, instead of being shot out. Default 2 m/s.")]
         [Min(0.001f)]
-        public float maxDepenetrationSpeed = k_Solver.MaxDepenetrationSpeed;
+        public float maxDepenetrationSpeed = k_Solver.Body.MaxDepenetrationSpeed;
 
         // ---- Sleep
 
         [Tooltip("The body sleeps once every particle has stayed slower than this for Sleep Delay (m/s). 0 = never sleeps. Default 0.02 m/s.")]
         [Min(0f)]
-        public float sleepSpeed = k_Solver.SleepSpeed;
+        public float sleepSpeed = k_Solver.Body.SleepSpeed;
 
         [Tooltip("Time every particle must stay below Sleep Speed before the body sleeps (s). Default 1 s.")]
         [Min(0f)]
-        public float sleepDelay = k_Solver.SleepDelay;
+        public float sleepDelay = k_Solver.Body.SleepDelay;
 
         // ---- Limits
 
@@ -223,7 +223,7 @@ namespace SoftBodyDynamics.Authoring
 
         [Tooltip("Speed above which the state counts as broken and the body is reset to its rest shape (m/s). Default 500 m/s.")]
         [Min(0f)]
-        public float maxSpeed = k_Solver.MaxSpeed;
+        public float maxSpeed = k_Solver.Body.MaxSpeed;
 
         [Tooltip("Rotation-extraction iterations per cluster and substep (warm-started; 2–3 usually suffice). Default 20 (a cap, rarely reached).")]
         [Range(1, 100)]
@@ -257,27 +257,19 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>The springs the mass-spring network gets besides the structural ones (bake time).</summary>
         public MassSpringBuildSettings MassSpringBuildSettings => new MassSpringBuildSettings { BendingSprings = bendingSprings };
 
-        /// <summary>The mass-spring solver parameters (runtime): the shared contact, sleep and limit fields, and the integrator.</summary>
+        /// <summary>The mass-spring solver parameters (runtime): the shared body settings and the integrator.</summary>
         public MassSpringParameters MassSpringParameters
         {
             get
             {
                 MassSpringParameters p = MassSpringParameters.Default;
                 p.Integrator = massSpringIntegrator;
-                p.Substeps = substeps;
-                p.Acceleration = UnityMathConversions.ToFloat3(gravity);
-                p.MaxDepenetrationSpeed = maxDepenetrationSpeed;
-                p.ParticleRadius = particleRadius;
-                p.Friction = friction;
-                p.Restitution = restitution;
-                p.SleepSpeed = sleepSpeed;
-                p.SleepDelay = sleepDelay;
-                p.MaxSpeed = maxSpeed;
+                p.Body = BodySettings;
                 return p;
             }
         }
 
-        /// <summary>The finite-element solver parameters (runtime): the shared contact, sleep and limit fields, model and integrator.</summary>
+        /// <summary>The finite-element solver parameters (runtime): the shared body settings, model and integrator.</summary>
         public FemParameters FemParameters
         {
             get
@@ -285,15 +277,7 @@ namespace SoftBodyDynamics.Authoring
                 FemParameters p = FemParameters.Default;
                 p.Model = femModel;
                 p.Integrator = femIntegrator;
-                p.Substeps = substeps;
-                p.Acceleration = UnityMathConversions.ToFloat3(gravity);
-                p.MaxDepenetrationSpeed = maxDepenetrationSpeed;
-                p.ParticleRadius = particleRadius;
-                p.Friction = friction;
-                p.Restitution = restitution;
-                p.SleepSpeed = sleepSpeed;
-                p.SleepDelay = sleepDelay;
-                p.MaxSpeed = maxSpeed;
+                p.Body = BodySettings;
                 return p;
             }
         }
@@ -315,18 +299,24 @@ namespace SoftBodyDynamics.Authoring
             Frequency = frequency,
             DampingRatio = dampingRatio,
             Beta = beta,
+            Body = BodySettings,
+            MaxSubstepPhase = maxSubstepPhase,
+            Plasticity = new PlasticityParameters { Yield = plasticYield, Creep = plasticCreep, MaxDeformation = plasticMaxDeformation },
+            RotationIterations = rotationIterations,
+        };
+
+        /// <summary>The settings every method shares (gravity, substeps, contacts, sleep, guard), from the inspector.</summary>
+        public ParticleBodySettings BodySettings => new ParticleBodySettings
+        {
             Acceleration = UnityMathConversions.ToFloat3(gravity),
             Substeps = substeps,
-            MaxSubstepPhase = maxSubstepPhase,
             MaxDepenetrationSpeed = maxDepenetrationSpeed,
             ParticleRadius = particleRadius,
             Friction = friction,
             Restitution = restitution,
-            Plasticity = new PlasticityParameters { Yield = plasticYield, Creep = plasticCreep, MaxDeformation = plasticMaxDeformation },
             SleepSpeed = sleepSpeed,
             SleepDelay = sleepDelay,
             MaxSpeed = maxSpeed,
-            RotationIterations = rotationIterations,
         };
 
         /// <summary>

@@ -56,7 +56,8 @@ namespace SoftBodyDynamics.Authoring
             ShapeMatchingParameters parameters = authoring.Parameters;
             AddComponent(entity, new SoftBodyShape { Blob = blob });
             AddComponent(entity, new SoftBodySettings { Value = parameters });
-            AddComponent(entity, new SoftBodyState { LastReport = new ShapeMatchingStepReport { BadParticle = -1 } });
+            AddComponent(entity, ParticleBodyState.Unstepped);
+            AddComponent(entity, ShapeMatchingDiagnostics.Unstepped);
             AddBuffer<SoftBodyPosition>(entity);
             AddBuffer<SoftBodyVelocity>(entity);
             AddBuffer<SoftBodyCluster>(entity);

@@ -4,9 +4,9 @@ using Unity.Entities;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Runtime bookkeeping of a mass-spring or finite-element body (tier 3): placement, sleep, NaN-guard count and the
-    /// last step's report. The shape-matching counterpart is <see cref="SoftBodyState"/>, whose report has the
-    /// shape-matching extras (rotation fallbacks, plasticity).
+    /// Runtime bookkeeping of every particle body, whatever its method (tier 3): placement, sleep, NaN-guard count and the
+    /// last step's report. A method's own report is beside it (<see cref="ShapeMatchingDiagnostics"/>,
+    /// <see cref="FemDiagnostics"/>).
     /// </summary>
     public struct ParticleBodyState : IComponentData
     {

@@ -35,7 +35,8 @@ namespace SoftBodyDynamics
         {
             entityManager.AddComponentData(entity, new SoftBodyShape { Blob = shape });
             entityManager.AddComponentData(entity, new SoftBodySettings { Value = parameters });
-            entityManager.AddComponentData(entity, new SoftBodyState { LastReport = new ShapeMatchingStepReport { BadParticle = -1 } });
+            entityManager.AddComponentData(entity, ParticleBodyState.Unstepped);
+            entityManager.AddComponentData(entity, ShapeMatchingDiagnostics.Unstepped);
             entityManager.AddBuffer<SoftBodyPosition>(entity);
             entityManager.AddBuffer<SoftBodyVelocity>(entity);
             entityManager.AddBuffer<SoftBodyCluster>(entity);

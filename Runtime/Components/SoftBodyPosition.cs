@@ -4,7 +4,7 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics
 {
     /// <summary>
-    /// Particle position xᵢ of a soft body (m) relative to the body's origin <c>SoftBodyState.Status.Origin</c>, one
+    /// Particle position xᵢ of a soft body (m) relative to the body's origin <c>ParticleBodyState.Status.Origin</c>, one
     /// element per particle (tier 3, runtime state). The origin is zero while the body stays within
     /// <see cref="SoftBodyDynamics.Solvers.ShapeMatchingSolver.RebaseDistance"/> of the world origin, so there the
     /// values are world positions; world position = Origin + Value.

@@ -6,7 +6,7 @@ namespace SoftBodyDynamics
     /// <summary>
     /// World-level settings of every particle body and fluid (a singleton; optional). When it exists, every body and fluid
     /// falls with <see cref="Gravity"/> instead of its own (e.g.
-    /// <see cref="SoftBodyDynamics.Solvers.ShapeMatchingParameters.Acceleration"/>,
+    /// <see cref="SoftBodyDynamics.Solvers.ParticleBodySettings.Acceleration"/>,
     /// <see cref="SoftBodyDynamics.Solvers.FluidParameters.Gravity"/>), and every body takes at least
     /// <see cref="MinSubsteps"/> substeps per fixed step (a fluid's substeps follow its CFL limit). Without it each uses its own values.
     /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
@@ -24,24 +24,21 @@ namespace SoftBodyDynamics
         /// <summary><paramref name="body"/> as this world steps it: the world's gravity and at least its substeps.</summary>
         public SoftBodyDynamics.Solvers.ShapeMatchingParameters Apply(SoftBodyDynamics.Solvers.ShapeMatchingParameters body)
         {
-            body.Acceleration = Gravity;
-            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
             return body;
         }
 
         /// <summary>A mass-spring body as this world steps it: the world's gravity and at least its substeps.</summary>
         public SoftBodyDynamics.Solvers.MassSpringParameters Apply(SoftBodyDynamics.Solvers.MassSpringParameters body)
         {
-            body.Acceleration = Gravity;
-            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
             return body;
         }
 
         /// <summary>A finite-element body as this world steps it: the world's gravity and at least its substeps.</summary>
         public SoftBodyDynamics.Solvers.FemParameters Apply(SoftBodyDynamics.Solvers.FemParameters body)
         {
-            body.Acceleration = Gravity;
-            body.Substeps = math.max(body.Substeps, MinSubsteps);
+            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
             return body;
         }
 

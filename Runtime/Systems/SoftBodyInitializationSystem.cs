@@ -36,7 +36,8 @@ namespace SoftBodyDynamics
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
             [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
 
-            void Execute(Entity entity, in SoftBodyShape shape, ref LocalTransform transform, ref SoftBodyState body,
+            void Execute(Entity entity, in SoftBodyShape shape, ref LocalTransform transform, ref ParticleBodyState body,
+                ref ShapeMatchingDiagnostics diagnostics,
                 DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
                 DynamicBuffer<SoftBodyCluster> clusters, EnabledRefRW<SoftBodyUninitialized> uninitialized)
             {
@@ -59,7 +60,8 @@ namespace SoftBodyDynamics
                 transform = LocalTransform.FromPositionRotation(transform.Position, rotation);
                 ShapeMatchingSolver.Initialize(blob.AsModel(), solverState,
                     SoftBodyPlacement.CenterOfMass(transform, blob.BodyRest.RestCenter), rotation, float3.zero, out body.Status);
-                body.LastReport = new ShapeMatchingStepReport { BadParticle = -1 };
+                body.LastReport = ParticleBodyState.Unstepped.LastReport;
+                diagnostics = ShapeMatchingDiagnostics.Unstepped;
                 uninitialized.ValueRW = false;
             }
         }

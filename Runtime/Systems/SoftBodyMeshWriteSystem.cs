@@ -66,7 +66,7 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct DeformJob : IJobEntity
         {
-            void Execute(in SoftBodyShape shape, in SoftBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+            void Execute(in SoftBodyShape shape, in ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
                 DynamicBuffer<SoftBodyMeshVertex> vertices, ref SoftBodyMeshInstance instance, ref RenderBounds renderBounds)
             {
                 if (instance.Deformed && instance.DeformedStep == body.Status.StepCount)

@@ -15,7 +15,8 @@ namespace SoftBodyDynamics
     /// (<see cref="SoftBodyWorldSettings.Apply"/>). One body per job
     /// index and no reductions across bodies, so results do not depend on scheduling. After the step the
     /// entity's <see cref="LocalTransform"/> follows the body (<see cref="SoftBodyPlacement.ToLocalTransform"/>),
-    /// <see cref="SoftBodyState"/> holds the report, and a NaN-guard reset logs a warning naming the
+    /// <see cref="ParticleBodyState"/> holds the shared report and <see cref="ShapeMatchingDiagnostics"/> the shape-matching
+    /// specifics, and a NaN-guard reset logs a warning naming the
     /// entity and the particle. Pending <see cref="SoftBodyImpulse"/>s are applied first.
     /// </summary>
     [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
@@ -47,14 +48,15 @@ namespace SoftBodyDynamics
             }.ScheduleParallel();
         }
 
-        /// <summary>Adds each enabled <see cref="SoftBodyImpulse"/> to its body's velocities, wakes the body and disables the impulse.</summary>
+        /// <summary>Adds each enabled <see cref="SoftBodyImpulse"/> of a shape-matching body, wakes it and disables the impulse.</summary>
         [BurstCompile]
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct ApplyImpulseJob : IJobEntity
         {
-            void Execute(ref SoftBodyState body, in DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
-                in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
+            void Execute(in SoftBodyShape shape, ref ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+                DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
             {
+                // The shape is the filter: only this method's bodies (the mass-spring and FEM systems handle their own).
                 ParticleBodyImpulse.Apply(ref body.Status, positions, velocities, impulse);
                 pending.ValueRW = false;
             }
@@ -75,7 +77,8 @@ namespace SoftBodyDynamics
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
             [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
 
-            void Execute(Entity entity, in SoftBodyShape shape, in SoftBodySettings settings, ref SoftBodyState body,
+            void Execute(Entity entity, in SoftBodyShape shape, in SoftBodySettings settings, ref ParticleBodyState body,
+                ref ShapeMatchingDiagnostics diagnostics,
                 ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
                 DynamicBuffer<SoftBodyCluster> clusters)
             {
@@ -97,7 +100,8 @@ namespace SoftBodyDynamics
                     Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();
 
-                body.LastReport = report;
+                diagnostics.LastReport = report;
+                body.LastReport = report.Step;
                 if (report.Reset)
                     Debug.LogWarning($"Soft body Entity({entity.Index}:{entity.Version}) was reset to its rest shape by the NaN guard: particle {report.BadParticle} had a non-finite or excessive position or velocity.");
                 transform = SoftBodyPlacement.ToLocalTransform(body.Status, blob.BodyRest.RestCenter);

@@ -120,7 +120,7 @@ namespace SoftBodyDynamics.Tests.Editor
                 Assert.That(math.all(math.isfinite(positions[i])), Is.True, $"particle {i} is finite: {positions[i]}");
         }
 
-        SoftBodyStatus Status(Entity entity) => m_Manager.GetComponentData<SoftBodyState>(entity).Status;
+        SoftBodyStatus Status(Entity entity) => m_Manager.GetComponentData<ParticleBodyState>(entity).Status;
 
         [Test]
         public void SimulationSystem_RunsOnlyWhenASoftBodyExists()
@@ -181,11 +181,11 @@ namespace SoftBodyDynamics.Tests.Editor
             int substeps = ShapeMatchingSolver.SubstepCount(parameters, k_Dt);
             int n = 30 * substeps;
             double h = (double)k_Dt / substeps;
-            float expectedY = (float)(startY + parameters.Acceleration.y * h * h * n * (n + 1) / 2.0);
+            float expectedY = (float)(startY + parameters.Body.Acceleration.y * h * h * n * (n + 1) / 2.0);
             SoftBodyStatus status = Status(body);
             Assert.That(status.Center.y, Is.EqualTo(expectedY).Within(1e-4f), "free fall of the centre of mass");
             Assert.That(status.ResetCount, Is.EqualTo(0));
-            Assert.That(m_Manager.GetComponentData<SoftBodyState>(body).LastReport.Stepped, Is.True);
+            Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Stepped, Is.True);
             AssertAllFinite(Positions(body));
 
             LocalTransform transform = m_Manager.GetComponentData<LocalTransform>(body);
@@ -197,7 +197,7 @@ namespace SoftBodyDynamics.Tests.Editor
         public void WorldSettings_ReplaceEveryBodysGravityAndRaiseItsSubsteps()
         {
             ShapeMatchingParameters parameters = ShapeMatchingParameters.Default;
-            parameters.Substeps = 1;
+            parameters.Body.Substeps = 1;
             parameters.MaxSubstepPhase = 1000f; // exactly the requested substeps
             Entity body = CreateBody(new float3(0f, 5f, 0f), quaternion.identity, parameters);
             Entity world = m_Manager.CreateEntity();
@@ -211,7 +211,7 @@ namespace SoftBodyDynamics.Tests.Editor
             int n = 30;
             double h = (double)k_Dt / 3;
             SoftBodyStatus status = Status(body);
-            Assert.That(m_Manager.GetComponentData<SoftBodyState>(body).LastReport.Substeps, Is.EqualTo(3), "the world's minimum substeps");
+            Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Substeps, Is.EqualTo(3), "the world's minimum substeps");
             Assert.That(status.Center.x, Is.EqualTo((float)(start.x + h * h * n * (n + 1) / 2.0)).Within(1e-5f), "the world's gravity");
             Assert.That(status.Center.y, Is.EqualTo(start.y).Within(1e-5f), "the body's own gravity is replaced");
         }
@@ -229,7 +229,7 @@ namespace SoftBodyDynamics.Tests.Editor
             AssertAllFinite(x);
             // The contact projection is the last move of every substep and leaves each particle centre at
             // least its radius above the plane; 1e-5 m covers float32 round-off at |y| ≈ 0.02 m.
-            float radius = ShapeMatchingParameters.Default.ParticleRadius;
+            float radius = ShapeMatchingParameters.Default.Body.ParticleRadius;
             foreach (float3 p in x)
                 Assert.That(p.y, Is.GreaterThanOrEqualTo(radius - 1e-5f), "no particle sinks into the ground");
             Assert.That(Status(body).Center.y, Is.LessThan(0.25f), "the body fell onto the ground");
@@ -246,22 +246,22 @@ namespace SoftBodyDynamics.Tests.Editor
             positions[0] = new SoftBodyPosition { Value = new float3(float.NaN, 0f, 0f) };
             Update();
 
-            SoftBodyState state = m_Manager.GetComponentData<SoftBodyState>(body);
+            ParticleBodyState state = m_Manager.GetComponentData<ParticleBodyState>(body);
             Assert.That(state.LastReport.Reset, Is.True, "the NaN guard fired");
             Assert.That(state.LastReport.BadParticle, Is.EqualTo(0), "and named the particle");
             Assert.That(state.Status.ResetCount, Is.EqualTo(before.ResetCount + 1));
             AssertAllFinite(Positions(body));
 
             Update();
-            Assert.That(m_Manager.GetComponentData<SoftBodyState>(body).LastReport.Reset, Is.False, "the reset state is healthy");
+            Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Reset, Is.False, "the reset state is healthy");
         }
 
         [Test]
         public void Impulse_WakesASleepingBody_AndIsConsumed()
         {
             ShapeMatchingParameters parameters = ShapeMatchingParameters.Default;
-            parameters.Acceleration = float3.zero;
-            parameters.SleepDelay = 0.1f;
+            parameters.Body.Acceleration = float3.zero;
+            parameters.Body.SleepDelay = 0.1f;
             Entity body = CreateBody(float3.zero, quaternion.identity, parameters);
             Update(20);
             Assert.That(Status(body).Asleep, Is.True, "a body at rest without gravity falls asleep");

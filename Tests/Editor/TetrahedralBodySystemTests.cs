@@ -73,7 +73,7 @@ namespace SoftBodyDynamics.Tests.Editor
             FemModelData model = FemModelData.Create(Cube(), ElasticMaterial.Jelly, default, issues, order);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
             if (restFactor)
-                Assert.That(model.BuildRestFactor(k_Dt / parameters.Substeps, FemSolver.DampingCoefficient(model.AsModel(), parameters)), Is.True);
+                Assert.That(model.BuildRestFactor(k_Dt / parameters.Body.Substeps, FemSolver.DampingCoefficient(model.AsModel(), parameters)), Is.True);
             BlobAssetReference<FemShapeBlob> blob = FemShapeBlobFactory.Create(model.AsModel(), Allocator.Persistent);
             m_Blobs.Add(blob);
             Entity entity = m_Manager.CreateEntity();

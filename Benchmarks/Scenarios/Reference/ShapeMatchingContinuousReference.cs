@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Omega = 2.0 * Math.PI * p.Frequency;
             m_Zeta = p.DampingRatio;
             m_Beta = p.Beta;
-            m_Acceleration = (Vector3d)p.Acceleration;
+            m_Acceleration = (Vector3d)p.Body.Acceleration;
             int n = m_Count = model.ParticleCount;
             m_Mass = new double[n];
             m_InverseCount = new double[n];

@@ -39,8 +39,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public ConvergenceRelease(ShapeMatchingModelData model, ShapeMatchingParameters parameters, float spacing, uint seed)
         {
             Model = model;
-            parameters.Acceleration = float3.zero;
-            parameters.SleepSpeed = 0f;
+            parameters.Body.Acceleration = float3.zero;
+            parameters.Body.SleepSpeed = 0f;
             Parameters = parameters;
             Size = BodyMeasures.RestSize(model.AsModel());
             var body = new ShapeMatchingInstance(model, parameters, float3.zero, quaternion.identity);
@@ -52,8 +52,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public ConvergenceRelease(ShapeMatchingModelData model, ShapeMatchingParameters parameters, float3[] start)
         {
             Model = model;
-            parameters.Acceleration = float3.zero;
-            parameters.SleepSpeed = 0f;
+            parameters.Body.Acceleration = float3.zero;
+            parameters.Body.SleepSpeed = 0f;
             Parameters = parameters;
             Size = BodyMeasures.RestSize(model.AsModel());
             Start = (float3[])start.Clone();
@@ -90,7 +90,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             resets = 0;
             var p = Parameters;
-            p.Substeps = substeps;
+            p.Body.Substeps = substeps;
             var body = new ShapeMatchingInstance(Model, p, float3.zero, quaternion.identity);
             Start.CopyTo(body.Positions, 0);
             Array.Clear(body.Velocities, 0, body.Velocities.Length);

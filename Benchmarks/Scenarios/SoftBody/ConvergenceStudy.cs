@@ -158,7 +158,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 if (ResistedMode != null)
                 {
                     ShapeMatchingParameters p = Release.Parameters;
-                    p.Substeps = substeps;
+                    p.Body.Substeps = substeps;
                     r = FreeOscillation.Run(Release.Model, ResistedMode, p, ConvergenceRelease.FrameTime, float3.zero);
                 }
                 m_Oscillations[substeps] = r;

@@ -61,7 +61,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Material = MaterialOf(preset);
             Model = ShapeMatchingBenchmarkBody.Lattice(Edge, BodySize, ShapeMatchingClusterLayout.Overlapping, Material.Mode);
             ShapeMatchingParameters p = Material.ApplyTo(ShapeMatchingParameters.Default);
-            p.ParticleRadius = ShapeMatchingBenchmarkBody.ParticleRadius(Edge, BodySize);
+            p.Body.ParticleRadius = ShapeMatchingBenchmarkBody.ParticleRadius(Edge, BodySize);
             Parameters = p;
             ResistedMode = FullyResistedMode.Find(Model, Material.Mode);
         }
@@ -84,7 +84,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public ShapeMatchingParameters WithSubsteps(int substeps)
         {
             ShapeMatchingParameters p = Parameters;
-            p.Substeps = substeps;
+            p.Body.Substeps = substeps;
             return p;
         }
     }

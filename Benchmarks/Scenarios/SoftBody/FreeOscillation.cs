@@ -68,8 +68,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static FreeOscillationResult Run(ShapeMatchingModelData model, double[] mode, ShapeMatchingParameters parameters,
             float dt, float3 position)
         {
-            parameters.Acceleration = float3.zero;
-            parameters.SleepSpeed = 0f;
+            parameters.Body.Acceleration = float3.zero;
+            parameters.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, parameters, position, quaternion.identity);
             Vector3d[] rest = ConvergenceRelease.World(body);
             double size = BodyMeasures.RestSize(model.AsModel());

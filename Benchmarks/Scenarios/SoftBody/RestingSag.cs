@@ -77,10 +77,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public static RestingSagResult Run(ShapeMatchingModelData model, ShapeMatchingParameters parameters, float dt)
         {
-            parameters.Acceleration = new float3(0f, -Gravity, 0f);
-            parameters.SleepSpeed = 0f;
+            parameters.Body.Acceleration = new float3(0f, -Gravity, 0f);
+            parameters.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, parameters, float3.zero, quaternion.identity);
-            ColliderShape[] floor = { Floor(model, parameters.ParticleRadius) };
+            ColliderShape[] floor = { Floor(model, parameters.Body.ParticleRadius) };
             double floorHeight = floor[0].Center.y;
             double restHeight = BodyMeasures.Center(body.Positions, model.Masses).Y - floorHeight;
             int window = Math.Max(2, (int)Math.Round(Window / dt));
@@ -146,7 +146,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             var runs = new RestingSagResult[3];
             for (int k = 0; k < 3; k++)
             {
-                p.Substeps = fine >> k;
+                p.Body.Substeps = fine >> k;
                 runs[k] = Run(model, p, ReferenceStep);
             }
             double deflection = (8 * runs[0].Deflection - 6 * runs[1].Deflection + runs[2].Deflection) / 3;

@@ -60,13 +60,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.DampingRatio = DampingRatio;
             p.Beta = Beta;
             p.MaxSubstepPhase = NoSubstepFloor;
-            p.Friction = Friction;
-            p.Restitution = Restitution;
+            p.Body.Friction = Friction;
+            p.Body.Restitution = Restitution;
             p.Plasticity = PlasticityParameters.None;
-            p.Substeps = substeps;
-            p.Acceleration = acceleration;
-            p.ParticleRadius = particleRadius;
-            p.SleepSpeed = 0f;
+            p.Body.Substeps = substeps;
+            p.Body.Acceleration = acceleration;
+            p.Body.ParticleRadius = particleRadius;
+            p.Body.SleepSpeed = 0f;
             return p;
         }
 

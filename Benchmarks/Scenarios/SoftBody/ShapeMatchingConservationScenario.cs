@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Model = ShapeMatchingBenchmarkBody.Lattice(Edge, BodySize, m_Layout, m_Mode);
             m_Parameters = ShapeMatchingBenchmarkBody.Parameters(m_Mode, Substeps, float3.zero,
                 ShapeMatchingBenchmarkBody.ParticleRadius(Edge, BodySize));
-            m_Parameters.SleepSpeed = 0f;
+            m_Parameters.Body.SleepSpeed = 0f;
             m_Body = new ShapeMatchingInstance(m_Model, m_Parameters, float3.zero, quaternion.identity);
             m_Steps = SpinningBlob.Steps;
         }

@@ -43,7 +43,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             m_Study = ConvergenceStudy.For(m_Mode, m_Layout, m_ReferenceSteps);
             ShapeMatchingParameters p = m_Study.Release.Parameters;
-            p.Substeps = m_Substeps;
+            p.Body.Substeps = m_Substeps;
             m_Body = new ShapeMatchingInstance(m_Study.Release.Model, p, float3.zero, quaternion.identity);
             m_Frame = ConvergenceRelease.Frames;
         }

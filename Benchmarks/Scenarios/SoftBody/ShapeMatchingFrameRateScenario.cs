@@ -40,10 +40,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             m_Study = FrameRateStudy.For(m_Preset);
             ShapeMatchingParameters p = m_Study.WithSubsteps(m_Substeps);
-            p.Acceleration = new float3(0f, -RestingSag.Gravity, 0f);
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = new float3(0f, -RestingSag.Gravity, 0f);
+            p.Body.SleepSpeed = 0f;
             m_Body = new ShapeMatchingInstance(m_Study.Model, p, float3.zero, quaternion.identity);
-            m_Floor = new[] { RestingSag.Floor(m_Study.Model, p.ParticleRadius) };
+            m_Floor = new[] { RestingSag.Floor(m_Study.Model, p.Body.ParticleRadius) };
             m_Steps = 0;
         }
 

@@ -47,7 +47,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Runs the test on a fresh instance of <paramref name="model"/> with <paramref name="parameters"/> (g = 0).</summary>
         public static SpinningBlobResult Run(ShapeMatchingModelData model, ShapeMatchingParameters parameters, float spacing, uint seed)
         {
-            parameters.Acceleration = float3.zero;
+            parameters.Body.Acceleration = float3.zero;
             var body = new ShapeMatchingInstance(model, parameters, float3.zero, quaternion.identity);
             Spin(body, spacing, seed);
             float[] m = model.Masses;

@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Solvers
                 ParameterChecks.Error(issues, SoftBodyIssueCode.FemModelInvalid, Invariant($"Model is {(int)p.Model}, which is not Co-Rotational or Neo-Hookean."));
             if ((uint)p.Integrator > (uint)FemIntegrator.Xpbd)
                 ParameterChecks.Error(issues, SoftBodyIssueCode.FemModelInvalid, Invariant($"Integrator is {(int)p.Integrator}, which is not Symplectic Euler, Implicit Euler or XPBD."));
-            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "Substeps", p.Substeps, FemParameters.MaxSubsteps, "substeps per step");
+            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "Substeps", p.Body.Substeps, FemParameters.MaxSubsteps, "substeps per step");
             ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "Iterations", p.Iterations, FemParameters.MaxIterations, "XPBD iterations per substep");
             ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "CgIterations", p.CgIterations, FemParameters.MaxCgIterations,
                 "conjugate-gradient iterations per substep");
@@ -27,9 +27,9 @@ namespace SoftBodyDynamics.Solvers
             if (ParameterChecks.Finite(issues, "DampingFrequency", p.DampingFrequency, "of at least 0 rad/s") && p.DampingFrequency < 0f)
                 ParameterChecks.Error(issues, SoftBodyIssueCode.FemDampingFrequencyInvalid, Invariant(
                     $"DampingFrequency is {p.DampingFrequency} rad/s; it must be at least 0 (0 = the model's own estimate)."));
-            ParameterChecks.Contact(issues, p.Acceleration, p.MaxDepenetrationSpeed, FemParameters.Default.MaxDepenetrationSpeed,
-                p.ParticleRadius, p.Friction, p.Restitution);
-            ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, p.RotationIterations);
+            ParameterChecks.Contact(issues, p.Body.Acceleration, p.Body.MaxDepenetrationSpeed, FemParameters.Default.Body.MaxDepenetrationSpeed,
+                p.Body.ParticleRadius, p.Body.Friction, p.Body.Restitution);
+            ParameterChecks.Guard(issues, p.Body.SleepSpeed, p.Body.SleepDelay, p.Body.MaxSpeed, p.RotationIterations);
             return !SoftBodyIssue.AnyError(issues, before);
         }
 

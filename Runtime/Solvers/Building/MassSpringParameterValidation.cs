@@ -16,15 +16,15 @@ namespace SoftBodyDynamics.Solvers
             if ((uint)p.Integrator > (uint)MassSpringIntegrator.Xpbd)
                 ParameterChecks.Error(issues, SoftBodyIssueCode.MassSpringIntegratorInvalid,
                     Invariant($"Integrator is {(int)p.Integrator}, which is not Symplectic Euler, Verlet, Implicit Euler or XPBD."));
-            ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "Substeps", p.Substeps, MassSpringParameters.MaxSubsteps, "substeps per step");
+            ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "Substeps", p.Body.Substeps, MassSpringParameters.MaxSubsteps, "substeps per step");
             ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "Iterations", p.Iterations, MassSpringParameters.MaxIterations,
                 "XPBD iterations per substep");
             ParameterChecks.Count(issues, SoftBodyIssueCode.MassSpringIterationsOutOfRange, "CgIterations", p.CgIterations, MassSpringParameters.MaxCgIterations,
                 "conjugate-gradient iterations per substep");
             ParameterChecks.CgTolerance(issues, SoftBodyIssueCode.MassSpringCgToleranceInvalid, p.CgTolerance, MassSpringParameters.Default.CgTolerance, true);
-            ParameterChecks.Contact(issues, p.Acceleration, p.MaxDepenetrationSpeed, MassSpringParameters.Default.MaxDepenetrationSpeed,
-                p.ParticleRadius, p.Friction, p.Restitution);
-            ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, null);
+            ParameterChecks.Contact(issues, p.Body.Acceleration, p.Body.MaxDepenetrationSpeed, MassSpringParameters.Default.Body.MaxDepenetrationSpeed,
+                p.Body.ParticleRadius, p.Body.Friction, p.Body.Restitution);
+            ParameterChecks.Guard(issues, p.Body.SleepSpeed, p.Body.SleepDelay, p.Body.MaxSpeed, null);
             return !SoftBodyIssue.AnyError(issues, before);
         }
     }

@@ -45,17 +45,17 @@ namespace SoftBodyDynamics.Solvers
             if (Finite(issues, "MaxSubstepPhase", p.MaxSubstepPhase, "above 0 rad") && p.MaxSubstepPhase <= 0f)
                 Error(issues, SoftBodyIssueCode.MaxSubstepPhaseNotPositive, Invariant(
                     $"MaxSubstepPhase is {p.MaxSubstepPhase} rad; it must be above 0 (default {ShapeMatchingParameters.Default.MaxSubstepPhase} rad)."));
-            if (p.Substeps < MinSubsteps || p.Substeps > MaxSubsteps)
-                Error(issues, SoftBodyIssueCode.SubstepsOutOfRange, Invariant($"Substeps is {p.Substeps}; it must be from {MinSubsteps} to {MaxSubsteps}."));
-            ParameterChecks.Contact(issues, p.Acceleration, p.MaxDepenetrationSpeed, ShapeMatchingParameters.Default.MaxDepenetrationSpeed,
-                p.ParticleRadius, p.Friction, p.Restitution);
+            if (p.Body.Substeps < MinSubsteps || p.Body.Substeps > MaxSubsteps)
+                Error(issues, SoftBodyIssueCode.SubstepsOutOfRange, Invariant($"Substeps is {p.Body.Substeps}; it must be from {MinSubsteps} to {MaxSubsteps}."));
+            ParameterChecks.Contact(issues, p.Body.Acceleration, p.Body.MaxDepenetrationSpeed, ShapeMatchingParameters.Default.Body.MaxDepenetrationSpeed,
+                p.Body.ParticleRadius, p.Body.Friction, p.Body.Restitution);
             Plasticity(issues, "Plasticity.Yield", p.Plasticity.Yield);
             Plasticity(issues, "Plasticity.Creep", p.Plasticity.Creep);
             Plasticity(issues, "Plasticity.MaxDeformation", p.Plasticity.MaxDeformation);
             if (p.Mode == ShapeMatchingMode.Rigid && p.Plasticity.Enabled)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.PlasticityIgnoredInRigidMode, -1,
                     "Plasticity is set, but the mode is Rigid: rigid goals cannot hold a dent, so the body stays elastic. Use Linear or Quadratic for plastic bodies."));
-            ParameterChecks.Guard(issues, p.SleepSpeed, p.SleepDelay, p.MaxSpeed, p.RotationIterations);
+            ParameterChecks.Guard(issues, p.Body.SleepSpeed, p.Body.SleepDelay, p.Body.MaxSpeed, p.RotationIterations);
 
             return !SoftBodyIssue.AnyError(issues, before);
         }

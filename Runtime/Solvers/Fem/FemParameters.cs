@@ -9,8 +9,11 @@ namespace SoftBodyDynamics.Solvers
         public FemMaterialModel Model;
         /// <summary>Time integrator. The unsupported pair (co-rotational + XPBD) falls back to symplectic Euler and is reported.</summary>
         public FemIntegrator Integrator;
-        /// <summary>Substeps per step (1–256). Symplectic Euler needs h = dt/substeps below <see cref="FemStability.MaxStableStep(in FemModel, FemMaterialModel)"/>.</summary>
-        public int Substeps;
+        /// <summary>
+        /// Gravity, substeps, contacts, sleep and the guard, shared by every method. Substeps per step (1–256): symplectic Euler
+        /// needs h = dt/substeps below <see cref="FemStability.MaxStableStep(in FemModel, FemMaterialModel)"/>.
+        /// </summary>
+        public ParticleBodySettings Body;
         /// <summary>XPBD constraint iterations per substep (1–64). 1 with many small substeps is the recommended use.</summary>
         public int Iterations;
         /// <summary>Most conjugate-gradient iterations per implicit substep (1–10000).</summary>
@@ -27,25 +30,6 @@ namespace SoftBodyDynamics.Solvers
         /// ratio): the mode at ω_ref has damping ratio ζ, faster modes more. 0 = the model's estimate π √(μ/ρ) / L.
         /// </summary>
         public float DampingFrequency;
-        /// <summary>Uniform acceleration on every node: gravity plus any wind-like force per mass (m/s²).</summary>
-        public float3 Acceleration;
-        /// <summary>Largest speed (m/s) at which a node that starts a substep inside a collider is pushed out. Default 2 m/s.</summary>
-        public float MaxDepenetrationSpeed;
-        /// <summary>Node radius used against colliders (m).</summary>
-        public float ParticleRadius;
-        /// <summary>
-        /// Coulomb friction coefficient against colliders (dimensionless). At 0 the implicit integrator holds its contact nodes
-        /// in its solve (a pressed body settles at its equilibrium); with friction they are pushed out after the solve.
-        /// </summary>
-        public float Friction;
-        /// <summary>Restitution e ∈ [0, 1] of node–collider contacts.</summary>
-        public float Restitution;
-        /// <summary>The body sleeps after its nodes' mass-weighted RMS speed stayed below this for <see cref="SleepDelay"/> (m/s). 0 = never sleeps.</summary>
-        public float SleepSpeed;
-        /// <summary>Time below <see cref="SleepSpeed"/> before sleeping (s).</summary>
-        public float SleepDelay;
-        /// <summary>Speed above which the state counts as absurd and the guard resets the body (m/s).</summary>
-        public float MaxSpeed;
         /// <summary>Rotation-extraction iterations per element and substep (co-rotational; warm-started).</summary>
         public int RotationIterations;
 
@@ -65,20 +49,12 @@ namespace SoftBodyDynamics.Solvers
                 p.Model = d.Model;
             if ((uint)Integrator > (uint)FemIntegrator.Xpbd)
                 p.Integrator = d.Integrator;
-            p.Substeps = math.clamp(Substeps, 1, MaxSubsteps);
+            p.Body = Body.Sanitized(MaxSubsteps);
             p.Iterations = math.clamp(Iterations, 1, MaxIterations);
             p.CgIterations = math.clamp(CgIterations, 1, MaxCgIterations);
             p.NewtonIterations = math.clamp(NewtonIterations, 1, FemImplicitEuler.MaxNewtonIterations);
             p.CgTolerance = CgTolerance > 0f && math.isfinite(CgTolerance) ? CgTolerance : d.CgTolerance;
             p.DampingFrequency = DampingFrequency > 0f && math.isfinite(DampingFrequency) ? DampingFrequency : 0f;
-            p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
-            p.MaxDepenetrationSpeed = MaxDepenetrationSpeed > 0f && math.isfinite(MaxDepenetrationSpeed) ? MaxDepenetrationSpeed : d.MaxDepenetrationSpeed;
-            p.ParticleRadius = math.isfinite(ParticleRadius) ? math.max(0f, ParticleRadius) : d.ParticleRadius;
-            p.Friction = math.isfinite(Friction) ? math.max(0f, Friction) : d.Friction;
-            p.Restitution = math.isnan(Restitution) ? d.Restitution : math.saturate(Restitution);
-            p.SleepSpeed = math.isfinite(SleepSpeed) ? math.max(0f, SleepSpeed) : d.SleepSpeed;
-            p.SleepDelay = math.isfinite(SleepDelay) ? math.max(0f, SleepDelay) : d.SleepDelay;
-            p.MaxSpeed = MaxSpeed > 0f && math.isfinite(MaxSpeed) ? MaxSpeed : d.MaxSpeed;
             p.RotationIterations = math.clamp(RotationIterations, 1, 100);
             return p;
         }
@@ -88,20 +64,12 @@ namespace SoftBodyDynamics.Solvers
         {
             Model = FemMaterialModel.CoRotational,
             Integrator = FemIntegrator.ImplicitEuler,
-            Substeps = 2,
+            Body = ParticleBodySettings.Default(2),
             Iterations = 1,
             CgIterations = 64,
             NewtonIterations = 1,
             CgTolerance = 1e-3f,
             DampingFrequency = 0f,
-            Acceleration = new float3(0f, -9.81f, 0f),
-            MaxDepenetrationSpeed = 2f,
-            ParticleRadius = 0.02f,
-            Friction = 0.5f,
-            Restitution = 0.1f,
-            SleepSpeed = 0.02f,
-            SleepDelay = 1f,
-            MaxSpeed = 500f,
             RotationIterations = RotationExtraction.DefaultMaxIterations,
         };
     }

@@ -67,10 +67,10 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static ParticleStepConstants Constants(in FemParameters p, FemIntegrator integrator, float dt)
         {
-            int substeps = math.clamp(p.Substeps, 1, FemParameters.MaxSubsteps);
-            ParticleStepConstants constants = ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction,
-                p.Restitution, p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
-            constants.Contact.KeepTouching = integrator == FemIntegrator.ImplicitEuler && p.Friction == 0f;
+            int substeps = math.clamp(p.Body.Substeps, 1, FemParameters.MaxSubsteps);
+            ParticleStepConstants constants = ParticleStepConstants.Undamped(dt, substeps, p.Body.Acceleration, p.Body.ParticleRadius, p.Body.Friction,
+                p.Body.Restitution, p.Body.MaxDepenetrationSpeed, p.Body.MaxSpeed, p.Body.SleepSpeed, p.Body.SleepDelay);
+            constants.Contact.KeepTouching = integrator == FemIntegrator.ImplicitEuler && p.Body.Friction == 0f;
             return constants;
         }
 

@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Solvers
     /// guard, wake and sleep, substeps of predict / solve / collide / update, placement, origin) with the springs as
     /// its solve stage (<see cref="MassSpringSolveStage"/>). The shared step's own velocity damping is off
     /// (retention 1): the dashpots of the springs are the only damping. A step of dt is
-    /// <see cref="MassSpringParameters.Substeps"/> substeps of h = dt / substeps.
+    /// <see cref="ParticleBodySettings.Substeps"/> substeps of h = dt / substeps.
     /// </summary>
     public static class MassSpringSolver
     {
@@ -23,9 +23,9 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The per-step constants for (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>: no pull, retention 1.</summary>
         public static ParticleStepConstants Constants(in MassSpringParameters p, float dt)
         {
-            int substeps = math.clamp(p.Substeps, 1, MassSpringParameters.MaxSubsteps);
-            return ParticleStepConstants.Undamped(dt, substeps, p.Acceleration, p.ParticleRadius, p.Friction, p.Restitution,
-                p.MaxDepenetrationSpeed, p.MaxSpeed, p.SleepSpeed, p.SleepDelay);
+            int substeps = math.clamp(p.Body.Substeps, 1, MassSpringParameters.MaxSubsteps);
+            return ParticleStepConstants.Undamped(dt, substeps, p.Body.Acceleration, p.Body.ParticleRadius, p.Body.Friction, p.Body.Restitution,
+                p.Body.MaxDepenetrationSpeed, p.Body.MaxSpeed, p.Body.SleepSpeed, p.Body.SleepDelay);
         }
 
         /// <summary>Advances the body by <paramref name="dt"/> seconds (see the class comment).</summary>

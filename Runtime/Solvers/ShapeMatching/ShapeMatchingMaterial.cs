@@ -58,8 +58,8 @@ namespace SoftBodyDynamics.Solvers
             parameters.DampingRatio = DampingRatio;
             parameters.Beta = Beta;
             parameters.Plasticity = Plasticity;
-            parameters.Friction = Friction;
-            parameters.Restitution = Restitution;
+            parameters.Body.Friction = Friction;
+            parameters.Body.Restitution = Restitution;
             return parameters;
         }
     }

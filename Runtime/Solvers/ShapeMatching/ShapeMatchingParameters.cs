@@ -27,38 +27,19 @@ namespace SoftBodyDynamics.Solvers
         /// Values above <see cref="MaxBeta"/> act as <see cref="MaxBeta"/>.
         /// </summary>
         public float Beta;
-        /// <summary>Uniform acceleration on every particle: gravity plus any wind-like force per mass (m/s²).</summary>
-        public float3 Acceleration;
         /// <summary>
-        /// Fewest substeps per step (1–64). The step adds substeps until ω·h ≤ <see cref="MaxSubstepPhase"/>, up to 64.
-        /// More substeps: stiffer contacts, less tunnelling, more cost.
+        /// Gravity, substeps, contacts, sleep and the guard, shared by every method. Substeps are the fewest per step (1–64):
+        /// the step adds substeps until ω·h ≤ <see cref="MaxSubstepPhase"/>, up to 64.
         /// </summary>
-        public int Substeps;
+        public ParticleBodySettings Body;
         /// <summary>
         /// Largest phase ω·h (rad) of one substep; the step uses as many substeps as that needs (at most 64).
         /// It bounds the error of the static sag, ≈ ζωh + (ωh)²/12 relative; frequency and decay are exact at any h.
         /// Smaller = more accurate and slower. Default 0.5 rad.
         /// </summary>
         public float MaxSubstepPhase;
-        /// <summary>
-        /// Largest speed (m/s) at which a particle that starts a substep inside a collider is pushed out. A body
-        /// spawned inside a collider leaves it at this speed, whole and along one direction, instead of being shot out. Default 2 m/s.
-        /// </summary>
-        public float MaxDepenetrationSpeed;
-        /// <summary>Particle radius used against colliders (m).</summary>
-        public float ParticleRadius;
-        /// <summary>Coulomb friction coefficient μ against colliders (0 = ice, 1 = rubber on concrete).</summary>
-        public float Friction;
-        /// <summary>Restitution e ∈ [0, 1] of particle–collider contacts (0 = no bounce).</summary>
-        public float Restitution;
         /// <summary>Plastic flow of the rest shape (Müller et al. 2005, §4.5).</summary>
         public PlasticityParameters Plasticity;
-        /// <summary>The body sleeps after its particles' mass-weighted RMS speed stayed below this for <see cref="SleepDelay"/> (m/s). 0 = never sleeps.</summary>
-        public float SleepSpeed;
-        /// <summary>Time below <see cref="SleepSpeed"/> before sleeping (s).</summary>
-        public float SleepDelay;
-        /// <summary>Speed above which the state counts as absurd and the NaN guard resets the body (m/s).</summary>
-        public float MaxSpeed;
         /// <summary>Rotation-extraction iterations per cluster and substep (warm-started).</summary>
         public int RotationIterations;
 
@@ -76,20 +57,11 @@ namespace SoftBodyDynamics.Solvers
             p.Frequency = Frequency >= 0f && !math.isnan(Frequency) ? math.min(Frequency, MaxFrequency) : d.Frequency;
             p.DampingRatio = DampingRatio >= 0f && !math.isnan(DampingRatio) ? math.min(DampingRatio, MaxDampingRatio) : d.DampingRatio;
             p.Beta = math.isnan(Beta) ? d.Beta : math.clamp(Beta, 0f, MaxBeta);
-            p.Acceleration = math.all(math.isfinite(Acceleration)) ? Acceleration : float3.zero;
-            p.Substeps = math.clamp(Substeps, 1, MaxSubsteps);
+            p.Body = Body.Sanitized(MaxSubsteps);
             p.MaxSubstepPhase = MaxSubstepPhase > 0f && math.isfinite(MaxSubstepPhase) ? MaxSubstepPhase : d.MaxSubstepPhase;
-            p.MaxDepenetrationSpeed = MaxDepenetrationSpeed > 0f && math.isfinite(MaxDepenetrationSpeed)
-                ? MaxDepenetrationSpeed : d.MaxDepenetrationSpeed;
-            p.ParticleRadius = math.isfinite(ParticleRadius) ? math.max(0f, ParticleRadius) : d.ParticleRadius;
-            p.Friction = math.isfinite(Friction) ? math.max(0f, Friction) : d.Friction;
-            p.Restitution = math.isnan(Restitution) ? d.Restitution : math.saturate(Restitution);
             bool plasticOk = math.isfinite(Plasticity.Yield) && math.isfinite(Plasticity.Creep) && math.isfinite(Plasticity.MaxDeformation)
                              && Plasticity.Yield >= 0f && Plasticity.Creep >= 0f && Plasticity.MaxDeformation >= 0f;
             p.Plasticity = plasticOk ? Plasticity : PlasticityParameters.None;
-            p.SleepSpeed = math.isfinite(SleepSpeed) ? math.max(0f, SleepSpeed) : d.SleepSpeed;
-            p.SleepDelay = math.isfinite(SleepDelay) ? math.max(0f, SleepDelay) : d.SleepDelay;
-            p.MaxSpeed = MaxSpeed > 0f && math.isfinite(MaxSpeed) ? MaxSpeed : d.MaxSpeed;
             p.RotationIterations = math.clamp(RotationIterations, 1, 100);
             if (Mode > ShapeMatchingMode.Quadratic)
                 p.Mode = d.Mode;
@@ -119,17 +91,9 @@ namespace SoftBodyDynamics.Solvers
             Frequency = 9f,
             DampingRatio = 0.13f,
             Beta = 0.5f,
-            Acceleration = new float3(0f, -9.81f, 0f),
-            Substeps = 4,
+            Body = ParticleBodySettings.Default(4),
             MaxSubstepPhase = 0.5f,
-            MaxDepenetrationSpeed = 2f,
-            ParticleRadius = 0.02f,
-            Friction = 0.5f,
-            Restitution = 0.1f,
             Plasticity = PlasticityParameters.None,
-            SleepSpeed = 0.02f,
-            SleepDelay = 1f,
-            MaxSpeed = 500f,
             RotationIterations = RotationExtraction.DefaultMaxIterations,
         };
     }

@@ -13,7 +13,7 @@ namespace SoftBodyDynamics.Solvers
     /// velocity, ω = 2πf and ζ the material's frequency and damping ratio. The step is the shared particle-body step
     /// (<see cref="ParticleBodyStep"/>: guard, wake and sleep, substeps of predict / solve / collide / update,
     /// placement, origin) with shape matching as its solve stage (<see cref="ShapeMatchingSolveStage"/>). A step of dt
-    /// takes at least <see cref="ShapeMatchingParameters.Substeps"/> substeps, and enough that
+    /// takes at least <see cref="ParticleBodySettings.Substeps"/> substeps, and enough that
     /// ωh ≤ <see cref="ShapeMatchingParameters.MaxSubstepPhase"/>; the pull α and the velocity retention D of a
     /// substep come from the exact rule of <see cref="OscillatorDiscretization"/>, so a deformation the goals resist
     /// fully oscillates at exactly ω and decays at exactly ζω for any h, and the substep is stable at any step size.
@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Substeps a step of <paramref name="dt"/> takes with <paramref name="parameters"/>: at least
-        /// <see cref="ShapeMatchingParameters.Substeps"/>, and enough that ω·h ≤ <see cref="ShapeMatchingParameters.MaxSubstepPhase"/>
+        /// <see cref="ParticleBodySettings.Substeps"/>, and enough that ω·h ≤ <see cref="ShapeMatchingParameters.MaxSubstepPhase"/>
         /// (at most <see cref="ShapeMatchingParameters.MaxSubsteps"/>).
         /// </summary>
         public static int SubstepCount(in ShapeMatchingParameters parameters, float dt) => Constants(parameters.Sanitized(), dt).Substeps;
@@ -47,15 +47,15 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>The per-step constants of a body with (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>.</summary>
         public static ParticleStepConstants Constants(in ShapeMatchingParameters p, float dt)
         {
-            ParticleStepConstants k = ParticleStepConstants.For(dt, p.AngularFrequency, p.DampingRatio, p.Substeps,
-                p.MaxSubstepPhase, ShapeMatchingParameters.MaxSubsteps, p.Acceleration);
-            k.Contact.Radius = p.ParticleRadius;
-            k.Contact.Friction = p.Friction;
-            k.Contact.Restitution = p.Restitution;
-            k.Contact.MaxDepenetration = p.MaxDepenetrationSpeed * k.H;
-            k.MaxSpeed = p.MaxSpeed;
-            k.SleepSpeed = p.SleepSpeed;
-            k.SleepDelay = p.SleepDelay;
+            ParticleStepConstants k = ParticleStepConstants.For(dt, p.AngularFrequency, p.DampingRatio, p.Body.Substeps,
+                p.MaxSubstepPhase, ShapeMatchingParameters.MaxSubsteps, p.Body.Acceleration);
+            k.Contact.Radius = p.Body.ParticleRadius;
+            k.Contact.Friction = p.Body.Friction;
+            k.Contact.Restitution = p.Body.Restitution;
+            k.Contact.MaxDepenetration = p.Body.MaxDepenetrationSpeed * k.H;
+            k.MaxSpeed = p.Body.MaxSpeed;
+            k.SleepSpeed = p.Body.SleepSpeed;
+            k.SleepDelay = p.Body.SleepDelay;
             return k;
         }
 

@@ -30,5 +30,12 @@ namespace SoftBodyDynamics.Solvers
         public bool PlasticityUnavailable;
         /// <summary>See <see cref="ParticleStepReport.ParametersReplaced"/>.</summary>
         public bool ParametersReplaced;
+
+        /// <summary>The part every particle-body method reports (<see cref="ParticleStepReport"/>).</summary>
+        public ParticleStepReport Step => new ParticleStepReport
+        {
+            Stepped = Stepped, WokeUp = WokeUp, FellAsleep = FellAsleep, Reset = Reset, BadParticle = BadParticle,
+            Contacts = Contacts, Substeps = Substeps, ParametersReplaced = ParametersReplaced,
+        };
     }
 }

@@ -5,7 +5,7 @@ using SoftBodyDynamics.Benchmarks.Scenarios;
 namespace SoftBodyDynamics.Tests.Solvers
 {
     /// <summary>
-    /// The float64 finite-element reference (<see cref="FemModel"/> and its scenarios) is correct and converged: exact
+    /// The float64 finite-element reference (<see cref="FemReferenceModel"/> and its scenarios) is correct and converged: exact
     /// for homogeneous states, a consistent tangent, the beam limits of Euler–Bernoulli, the Turek–Hron CSM3 benchmark
     /// and the closed-form uniaxial curve. The soft-body comparison measures its methods' errors against these values.
     /// </summary>
@@ -26,7 +26,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             FemBoxMesh mesh = FemBoxMesh.Box(0.3, 0.2, 0.25, 2, 2, 2);
             var material = new FemMaterial(law, 1e6, 0.3);
-            var model = new FemModel(mesh, material, 1000, new bool[mesh.DofCount]);
+            var model = new FemReferenceModel(mesh, material, 1000, new bool[mesh.DofCount]);
             double[] h = { 0.12, -0.05, 0.03, 0.04, -0.08, 0.06, -0.02, 0.07, 0.1 };
             var u = new double[mesh.DofCount];
             for (int n = 0; n < mesh.NodeCount; n++)
@@ -117,7 +117,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [TestCaseSource(nameof(Laws))]
         public void Fem_TangentIsFiniteDifferenceOfForces(FemMaterialLaw law)
         {
-            FemModel model = CantileverReference.Model(0.4, 0.2, 0.2, 1e6, 0.3, 1000, 1, law);
+            FemReferenceModel model = CantileverReference.Model(0.4, 0.2, 0.2, 1e6, 0.3, 1000, 1, law);
             int dofs = model.Mesh.DofCount, n = model.FreeCount;
             var random = new System.Random(7);
             var u = new double[dofs];
@@ -249,7 +249,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var fixedDofs = new bool[mesh.DofCount];
             for (int j = 0; j < mesh.NodesY; j++)
                 fixedDofs[mesh.Node(0, j, 0) * 2] = fixedDofs[mesh.Node(0, j, 0) * 2 + 1] = true;
-            var model = new FemModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, youngModulus, Csm3Reference.PoissonRatio),
+            var model = new FemReferenceModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, youngModulus, Csm3Reference.PoissonRatio),
                 Csm3Reference.Density, fixedDofs);
             var integrator = new FemNewmark(model, model.BodyForce(new[] { 0, -Csm3Reference.Gravity }), timeStep);
             (double k0, double w0, double p0) = integrator.Energies();

@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using NUnit.Framework;
 using SoftBodyDynamics.Benchmarks.Scenarios;
 using SoftBodyDynamics.Solvers;
-using FemModel = SoftBodyDynamics.Benchmarks.Scenarios.FemModel;
 
 namespace SoftBodyDynamics.Tests.Solvers
 {
@@ -33,7 +32,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             (double[] u, FemSolveReport report) = SquashReference.Squashed(size, m.YoungsModulus, m.PoissonRatio, m.Density, resolution, stretch);
             Assert.IsTrue(report.Converged);
             UniaxialResult exact = UniaxialNeoHookean.Stress(stretch, m.YoungsModulus, m.PoissonRatio, SquashReference.Law);
-            FemModel model = SquashReference.Model(size, m.YoungsModulus, m.PoissonRatio, m.Density, resolution, plates: true);
+            FemReferenceModel model = SquashReference.Model(size, m.YoungsModulus, m.PoissonRatio, m.Density, resolution, plates: true);
             double[] expected = SquashReference.Homogeneous(model.Mesh, stretch, exact.LateralStretch);
             for (int d = 0; d < u.Length; d++)
                 Assert.That(u[d], Is.EqualTo(expected[d]).Within(1e-10 * size), $"dof {d}");
@@ -60,7 +59,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             const double zeta = 0.1, amplitude = 1e-6 * SquashScene.Size;
             ElasticMaterial m = Jelly;
-            FemModel model = SquashReference.Model(SquashScene.Size, m.YoungsModulus, m.PoissonRatio, m.Density, 1);
+            FemReferenceModel model = SquashReference.Model(SquashScene.Size, m.YoungsModulus, m.PoissonRatio, m.Density, 1);
             (double w2, double[] mode, _) = FemEigen.Lowest(model, new double[model.Mesh.DofCount],
                 SquashReference.Homogeneous(model.Mesh, 0.5, 1.25));
             double omega = Math.Sqrt(w2), period = 2 * Math.PI / omega, omegaD = omega * Math.Sqrt(1 - zeta * zeta);

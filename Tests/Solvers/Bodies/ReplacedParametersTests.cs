@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             MassSpringSolver.Initialize(model.AsModel(), state, float3.zero, quaternion.identity, float3.zero, out SoftBodyStatus status);
             Assert.That(MassSpringSolver.Step(model.AsModel(), p, ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, state, ref status, 64).ParametersReplaced,
                 Is.False, "valid parameters");
-            p.Substeps = 0;
+            p.Body.Substeps = 0;
             Assert.That(MassSpringSolver.Step(model.AsModel(), p, ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, state, ref status, 64).ParametersReplaced,
                 Is.True, "zero substeps");
         }

@@ -16,8 +16,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             yield return Case("ModelOutOfEnum", (ref FemParameters p) => p.Model = (FemMaterialModel)5, SoftBodyIssueCode.FemModelInvalid);
             yield return Case("IntegratorOutOfEnum", (ref FemParameters p) => p.Integrator = (FemIntegrator)9, SoftBodyIssueCode.FemModelInvalid);
-            yield return Case("SubstepsZero", (ref FemParameters p) => p.Substeps = 0, SoftBodyIssueCode.FemIterationsOutOfRange);
-            yield return Case("SubstepsAboveMax", (ref FemParameters p) => p.Substeps = FemParameters.MaxSubsteps + 1, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("SubstepsZero", (ref FemParameters p) => p.Body.Substeps = 0, SoftBodyIssueCode.FemIterationsOutOfRange);
+            yield return Case("SubstepsAboveMax", (ref FemParameters p) => p.Body.Substeps = FemParameters.MaxSubsteps + 1, SoftBodyIssueCode.FemIterationsOutOfRange);
             yield return Case("IterationsZero", (ref FemParameters p) => p.Iterations = 0, SoftBodyIssueCode.FemIterationsOutOfRange);
             yield return Case("CgIterationsAboveMax", (ref FemParameters p) => p.CgIterations = FemParameters.MaxCgIterations + 1, SoftBodyIssueCode.FemIterationsOutOfRange);
             yield return Case("NewtonIterationsNegative", (ref FemParameters p) => p.NewtonIterations = -1, SoftBodyIssueCode.FemIterationsOutOfRange);
@@ -25,14 +25,14 @@ namespace SoftBodyDynamics.Tests.Solvers
             yield return Case("CgToleranceOne", (ref FemParameters p) => p.CgTolerance = 1f, SoftBodyIssueCode.FemCgToleranceInvalid);
             yield return Case("CgToleranceNaN", (ref FemParameters p) => p.CgTolerance = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
             yield return Case("DampingFrequencyNegative", (ref FemParameters p) => p.DampingFrequency = -1f, SoftBodyIssueCode.FemDampingFrequencyInvalid);
-            yield return Case("AccelerationInfinite", (ref FemParameters p) => p.Acceleration.y = float.NegativeInfinity, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("DepenetrationZero", (ref FemParameters p) => p.MaxDepenetrationSpeed = 0f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
-            yield return Case("ParticleRadiusZero", (ref FemParameters p) => p.ParticleRadius = 0f, SoftBodyIssueCode.ParticleRadiusInvalid);
-            yield return Case("FrictionNegative", (ref FemParameters p) => p.Friction = -0.1f, SoftBodyIssueCode.FrictionNegative);
-            yield return Case("RestitutionAboveOne", (ref FemParameters p) => p.Restitution = 1.5f, SoftBodyIssueCode.RestitutionOutOfRange);
-            yield return Case("SleepSpeedNegative", (ref FemParameters p) => p.SleepSpeed = -1f, SoftBodyIssueCode.SleepSpeedNegative);
-            yield return Case("SleepDelayNegative", (ref FemParameters p) => p.SleepDelay = -1f, SoftBodyIssueCode.SleepDelayNegative);
-            yield return Case("MaxSpeedZero", (ref FemParameters p) => p.MaxSpeed = 0f, SoftBodyIssueCode.MaxSpeedNotPositive);
+            yield return Case("AccelerationInfinite", (ref FemParameters p) => p.Body.Acceleration.y = float.NegativeInfinity, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("DepenetrationZero", (ref FemParameters p) => p.Body.MaxDepenetrationSpeed = 0f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
+            yield return Case("ParticleRadiusZero", (ref FemParameters p) => p.Body.ParticleRadius = 0f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("FrictionNegative", (ref FemParameters p) => p.Body.Friction = -0.1f, SoftBodyIssueCode.FrictionNegative);
+            yield return Case("RestitutionAboveOne", (ref FemParameters p) => p.Body.Restitution = 1.5f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("SleepSpeedNegative", (ref FemParameters p) => p.Body.SleepSpeed = -1f, SoftBodyIssueCode.SleepSpeedNegative);
+            yield return Case("SleepDelayNegative", (ref FemParameters p) => p.Body.SleepDelay = -1f, SoftBodyIssueCode.SleepDelayNegative);
+            yield return Case("MaxSpeedZero", (ref FemParameters p) => p.Body.MaxSpeed = 0f, SoftBodyIssueCode.MaxSpeedNotPositive);
             yield return Case("RotationIterationsZero", (ref FemParameters p) => p.RotationIterations = 0, SoftBodyIssueCode.RotationIterationsInvalid);
         }
 
@@ -61,9 +61,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void SharedField_GetsTheSameMessageAsInShapeMatching()
         {
             FemParameters f = FemParameters.Default;
-            f.Friction = -0.3f;
+            f.Body.Friction = -0.3f;
             ShapeMatchingParameters s = ShapeMatchingParameters.Default;
-            s.Friction = -0.3f;
+            s.Body.Friction = -0.3f;
             var fem = new List<SoftBodyIssue>();
             var sm = new List<SoftBodyIssue>();
             FemParameterValidation.Validate(f, fem);

@@ -15,15 +15,15 @@ namespace SoftBodyDynamics.Tests.Solvers
         static IEnumerable<TestCaseData> BadFields()
         {
             yield return Case("IntegratorOutOfEnum", (ref MassSpringParameters p) => p.Integrator = (MassSpringIntegrator)4, SoftBodyIssueCode.MassSpringIntegratorInvalid);
-            yield return Case("SubstepsZero", (ref MassSpringParameters p) => p.Substeps = 0, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
+            yield return Case("SubstepsZero", (ref MassSpringParameters p) => p.Body.Substeps = 0, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
             yield return Case("IterationsAboveMax", (ref MassSpringParameters p) => p.Iterations = MassSpringParameters.MaxIterations + 1, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
             yield return Case("CgIterationsZero", (ref MassSpringParameters p) => p.CgIterations = 0, SoftBodyIssueCode.MassSpringIterationsOutOfRange);
             yield return Case("CgToleranceNegative", (ref MassSpringParameters p) => p.CgTolerance = -1e-4f, SoftBodyIssueCode.MassSpringCgToleranceInvalid);
             yield return Case("CgToleranceOne", (ref MassSpringParameters p) => p.CgTolerance = 1f, SoftBodyIssueCode.MassSpringCgToleranceInvalid);
-            yield return Case("ParticleRadiusHuge", (ref MassSpringParameters p) => p.ParticleRadius = 1000f, SoftBodyIssueCode.ParticleRadiusInvalid);
-            yield return Case("RestitutionNegative", (ref MassSpringParameters p) => p.Restitution = -0.1f, SoftBodyIssueCode.RestitutionOutOfRange);
-            yield return Case("SleepDelayNaN", (ref MassSpringParameters p) => p.SleepDelay = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("MaxSpeedNegative", (ref MassSpringParameters p) => p.MaxSpeed = -5f, SoftBodyIssueCode.MaxSpeedNotPositive);
+            yield return Case("ParticleRadiusHuge", (ref MassSpringParameters p) => p.Body.ParticleRadius = 1000f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("RestitutionNegative", (ref MassSpringParameters p) => p.Body.Restitution = -0.1f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("SleepDelayNaN", (ref MassSpringParameters p) => p.Body.SleepDelay = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("MaxSpeedNegative", (ref MassSpringParameters p) => p.Body.MaxSpeed = -5f, SoftBodyIssueCode.MaxSpeedNotPositive);
         }
 
         [Test]

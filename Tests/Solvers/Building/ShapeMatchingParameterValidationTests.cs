@@ -22,7 +22,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             yield return Case("FrequencyZero", (ref ShapeMatchingParameters p) => p.Frequency = 0f, SoftBodyIssueCode.FrequencyZero, SoftBodyIssueSeverity.Warning);
             yield return Case("BetaOne", (ref ShapeMatchingParameters p) => p.Beta = 1f, SoftBodyIssueCode.BetaLimited, SoftBodyIssueSeverity.Warning);
             yield return Case("MaxSubstepPhaseZero", (ref ShapeMatchingParameters p) => p.MaxSubstepPhase = 0f, SoftBodyIssueCode.MaxSubstepPhaseNotPositive);
-            yield return Case("MaxDepenetrationSpeedNegative", (ref ShapeMatchingParameters p) => p.MaxDepenetrationSpeed = -1f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
+            yield return Case("MaxDepenetrationSpeedNegative", (ref ShapeMatchingParameters p) => p.Body.MaxDepenetrationSpeed = -1f, SoftBodyIssueCode.MaxDepenetrationSpeedNotPositive);
             yield return Case("PlasticRigid", (ref ShapeMatchingParameters p) =>
             {
                 p.Mode = ShapeMatchingMode.Rigid;
@@ -33,22 +33,22 @@ namespace SoftBodyDynamics.Tests.Solvers
             yield return Case("BetaInfinite", (ref ShapeMatchingParameters p) => p.Beta = float.PositiveInfinity, SoftBodyIssueCode.ParameterNotFinite);
             yield return Case("DampingRatioNegative", (ref ShapeMatchingParameters p) => p.DampingRatio = -1f, SoftBodyIssueCode.DampingRatioOutOfRange);
             yield return Case("DampingRatioHuge", (ref ShapeMatchingParameters p) => p.DampingRatio = 1e4f, SoftBodyIssueCode.DampingRatioOutOfRange);
-            yield return Case("AccelerationNaN", (ref ShapeMatchingParameters p) => p.Acceleration.y = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("SubstepsZero", (ref ShapeMatchingParameters p) => p.Substeps = 0, SoftBodyIssueCode.SubstepsOutOfRange);
-            yield return Case("SubstepsAbove64", (ref ShapeMatchingParameters p) => p.Substeps = 65, SoftBodyIssueCode.SubstepsOutOfRange);
-            yield return Case("ParticleRadiusZero", (ref ShapeMatchingParameters p) => p.ParticleRadius = 0f, SoftBodyIssueCode.ParticleRadiusInvalid);
-            yield return Case("ParticleRadiusHuge", (ref ShapeMatchingParameters p) => p.ParticleRadius = 1000f, SoftBodyIssueCode.ParticleRadiusInvalid);
-            yield return Case("FrictionNegative", (ref ShapeMatchingParameters p) => p.Friction = -0.2f, SoftBodyIssueCode.FrictionNegative);
-            yield return Case("RestitutionAboveOne", (ref ShapeMatchingParameters p) => p.Restitution = 1.2f, SoftBodyIssueCode.RestitutionOutOfRange);
-            yield return Case("RestitutionNegative", (ref ShapeMatchingParameters p) => p.Restitution = -0.2f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("AccelerationNaN", (ref ShapeMatchingParameters p) => p.Body.Acceleration.y = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("SubstepsZero", (ref ShapeMatchingParameters p) => p.Body.Substeps = 0, SoftBodyIssueCode.SubstepsOutOfRange);
+            yield return Case("SubstepsAbove64", (ref ShapeMatchingParameters p) => p.Body.Substeps = 65, SoftBodyIssueCode.SubstepsOutOfRange);
+            yield return Case("ParticleRadiusZero", (ref ShapeMatchingParameters p) => p.Body.ParticleRadius = 0f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("ParticleRadiusHuge", (ref ShapeMatchingParameters p) => p.Body.ParticleRadius = 1000f, SoftBodyIssueCode.ParticleRadiusInvalid);
+            yield return Case("FrictionNegative", (ref ShapeMatchingParameters p) => p.Body.Friction = -0.2f, SoftBodyIssueCode.FrictionNegative);
+            yield return Case("RestitutionAboveOne", (ref ShapeMatchingParameters p) => p.Body.Restitution = 1.2f, SoftBodyIssueCode.RestitutionOutOfRange);
+            yield return Case("RestitutionNegative", (ref ShapeMatchingParameters p) => p.Body.Restitution = -0.2f, SoftBodyIssueCode.RestitutionOutOfRange);
             yield return Case("YieldNegative", (ref ShapeMatchingParameters p) => p.Plasticity.Yield = -0.1f, SoftBodyIssueCode.PlasticityNegative);
             yield return Case("CreepNegative", (ref ShapeMatchingParameters p) => p.Plasticity.Creep = -0.1f, SoftBodyIssueCode.PlasticityNegative);
             yield return Case("MaxDeformationNegative", (ref ShapeMatchingParameters p) => p.Plasticity.MaxDeformation = -0.1f, SoftBodyIssueCode.PlasticityNegative);
             yield return Case("CreepNaN", (ref ShapeMatchingParameters p) => p.Plasticity.Creep = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
-            yield return Case("SleepSpeedNegative", (ref ShapeMatchingParameters p) => p.SleepSpeed = -0.01f, SoftBodyIssueCode.SleepSpeedNegative);
-            yield return Case("SleepDelayNegative", (ref ShapeMatchingParameters p) => p.SleepDelay = -1f, SoftBodyIssueCode.SleepDelayNegative);
-            yield return Case("MaxSpeedZero", (ref ShapeMatchingParameters p) => p.MaxSpeed = 0f, SoftBodyIssueCode.MaxSpeedNotPositive);
-            yield return Case("MaxSpeedNaN", (ref ShapeMatchingParameters p) => p.MaxSpeed = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
+            yield return Case("SleepSpeedNegative", (ref ShapeMatchingParameters p) => p.Body.SleepSpeed = -0.01f, SoftBodyIssueCode.SleepSpeedNegative);
+            yield return Case("SleepDelayNegative", (ref ShapeMatchingParameters p) => p.Body.SleepDelay = -1f, SoftBodyIssueCode.SleepDelayNegative);
+            yield return Case("MaxSpeedZero", (ref ShapeMatchingParameters p) => p.Body.MaxSpeed = 0f, SoftBodyIssueCode.MaxSpeedNotPositive);
+            yield return Case("MaxSpeedNaN", (ref ShapeMatchingParameters p) => p.Body.MaxSpeed = float.NaN, SoftBodyIssueCode.ParameterNotFinite);
             yield return Case("RotationIterationsZero", (ref ShapeMatchingParameters p) => p.RotationIterations = 0, SoftBodyIssueCode.RotationIterationsInvalid);
         }
 
@@ -79,7 +79,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Validate_NonFiniteField_IsNamedInTheMessage()
         {
             ShapeMatchingParameters p = ShapeMatchingParameters.Default;
-            p.SleepDelay = float.NaN;
+            p.Body.SleepDelay = float.NaN;
             var issues = new List<SoftBodyIssue>();
             ShapeMatchingParameterValidation.Validate(p, issues);
             Assert.That(issues.Count, Is.EqualTo(1));
@@ -91,8 +91,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             ShapeMatchingParameters p = ShapeMatchingParameters.Default;
             p.Beta = 2f;
-            p.Substeps = 0;
-            p.Friction = float.NaN;
+            p.Body.Substeps = 0;
+            p.Body.Friction = float.NaN;
             var issues = new List<SoftBodyIssue>();
             ShapeMatchingParameterValidation.Validate(p, issues);
             Assert.That(Array.ConvertAll(issues.ToArray(), i => i.Code), Is.EquivalentTo(new[]

@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// <summary>Edge of the jelly cube (m), 4 cells of 6 tetrahedra: 125 particles 5 cm apart.</summary>
         const float k_Size = 0.2f;
         /// <summary>The depenetration speed (m/s) of the study's bodies: every method's default (shape matching's, mass-spring's and FEM's are equal).</summary>
-        static readonly float k_MaxDepenetrationSpeed = ShapeMatchingParameters.Default.MaxDepenetrationSpeed;
+        static readonly float k_MaxDepenetrationSpeed = ShapeMatchingParameters.Default.Body.MaxDepenetrationSpeed;
 
         /// <summary>Colliders off the cube's centre by 1 cm, that hold 27 of its 125 particles.</summary>
         static ColliderShape Collider(string shape) => shape switch

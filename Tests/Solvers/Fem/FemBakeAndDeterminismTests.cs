@@ -176,7 +176,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemParameters p = FemParameters.Default;
             p.Integrator = integrator;
             p.Model = integrator == FemIntegrator.Xpbd ? FemMaterialModel.NeoHookean : FemMaterialModel.CoRotational;
-            p.Substeps = 8;
+            p.Body.Substeps = 8;
             var colliders = new[] { ColliderShape.Plane(new float3(0f, -0.3f, 0f), new float3(0f, 1f, 0f)) };
             FemTestBody a = new FemTestBody(data, p), b = new FemTestBody(data, p);
             for (int step = 0; step < 30; step++)

@@ -60,8 +60,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             if (restFactor)
                 Assert.That(data.BuildRestFactor(1f, 0f), Is.True);
             FemParameters p = FemParameters.Default;
-            p.Substeps = 1;
-            p.SleepSpeed = 0f;
+            p.Body.Substeps = 1;
+            p.Body.SleepSpeed = 0f;
             p.CgIterations = 2000;
             p.CgTolerance = 1e-6f;
             var body = new FemTestBody(data, p);

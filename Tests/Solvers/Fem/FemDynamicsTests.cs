@@ -15,9 +15,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemParameters p = FemParameters.Default;
             p.Model = model;
             p.Integrator = integrator;
-            p.Substeps = substeps;
-            p.Acceleration = gravity;
-            p.SleepSpeed = 0f;
+            p.Body.Substeps = substeps;
+            p.Body.Acceleration = gravity;
+            p.Body.SleepSpeed = 0f;
             p.CgIterations = 200;
             p.CgTolerance = 1e-4f;
             return p;
@@ -37,9 +37,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemModelData data = FemTestBodies.Bake(FemTestBodies.Box(2, 2, 2, new float3(0.2f)), Jelly);
             FemParameters p = Parameters(model, integrator, 1, float3.zero);
             if (FemSolver.EffectiveIntegrator(p, out _) == FemIntegrator.SymplecticEuler)
-                p.Substeps = StableSubsteps(data, p, 1f / 60f);
+                p.Body.Substeps = StableSubsteps(data, p, 1f / 60f);
             else
-                p.Substeps = 8;
+                p.Body.Substeps = 8;
             var body = new FemTestBody(data, p);
             float restVolume = body.Volume();
             for (int i = 0; i < body.Positions.Length; i++)
@@ -56,7 +56,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             for (int step = 0; step < 120; step++)
                 Assert.That(body.Step(1f / 60f).Step.Reset, Is.False, $"reset at step {step}");
             float volume = body.Volume();
-            TestContext.WriteLine($"{p.Substeps} substeps: min det F {body.MinDeterminant():G4}, volume {volume / restVolume:G5} of rest");
+            TestContext.WriteLine($"{p.Body.Substeps} substeps: min det F {body.MinDeterminant():G4}, volume {volume / restVolume:G5} of rest");
             Assert.That(body.AllFinite());
             Assert.That(body.MinDeterminant(), Is.GreaterThan(0f));
             Assert.That(math.abs(volume / restVolume - 1f), Is.LessThan(0.05f));
@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             FemModelData data = FemTestBodies.Bake(FemTestBodies.Box(3, 2, 2, new float3(0.3f, 0.2f, 0.2f)), Jelly);
             FemParameters p = Parameters(model, integrator, 1, float3.zero);
-            p.Substeps = FemSolver.EffectiveIntegrator(p, out _) == FemIntegrator.SymplecticEuler ? StableSubsteps(data, p, 1f / 60f) : 8;
+            p.Body.Substeps = FemSolver.EffectiveIntegrator(p, out _) == FemIntegrator.SymplecticEuler ? StableSubsteps(data, p, 1f / 60f) : 8;
             var body = new FemTestBody(data, p);
             var random = new System.Random(3);
             for (int i = 0; i < body.Velocities.Length; i++)
@@ -90,7 +90,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             for (int i = 0; i < pinned.Length; i++)
                 pinned[i] = data.RestPositions[i].x == 0f;
             FemModelData pinnedData = FemTestBodies.Bake(FemTestBodies.Box(3, 2, 2, new float3(0.3f, 0.2f, 0.2f)), Jelly, pinned);
-            var hanging = new FemTestBody(pinnedData, Parameters(model, integrator, p.Substeps, new float3(0f, -9.81f, 0f)));
+            var hanging = new FemTestBody(pinnedData, Parameters(model, integrator, p.Body.Substeps, new float3(0f, -9.81f, 0f)));
             var start = (float3[])hanging.Positions.Clone();
             for (int step = 0; step < 30; step++)
                 Assert.That(hanging.Step(1f / 60f).Step.Reset, Is.False);

@@ -19,17 +19,17 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemParameters p = FemParameters.Default;
             p.Integrator = FemIntegrator.ImplicitEuler;
             p.Model = model;
-            p.Substeps = 1;
-            p.Friction = 0f;
+            p.Body.Substeps = 1;
+            p.Body.Friction = 0f;
             p.CgIterations = 2000;
             p.CgTolerance = 1e-5f;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             return p;
         }
 
         static FemTestBody RestingCube(FemMaterialModel model) =>
             new FemTestBody(FemTestBodies.Bake(FemTestBodies.Box(2, 2, 2, new float3(0.2f)), s_Jelly),
-                Frictionless(model), new float3(0f, 0.1f + FemParameters.Default.ParticleRadius, 0f));
+                Frictionless(model), new float3(0f, 0.1f + FemParameters.Default.Body.ParticleRadius, 0f));
 
         /// <summary>
         /// A cube at rest on a frictionless floor, one 1/60 s substep per step, stays on it: after 2 s every node is at most
@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void RestingCube_StaysOnAFrictionlessFloor_AtRest(FemMaterialModel model)
         {
             FemTestBody body = RestingCube(model);
-            float radius = body.Parameters.ParticleRadius;
+            float radius = body.Parameters.Body.ParticleRadius;
             for (int step = 0; step < 120; step++)
             {
                 FemStepReport report = body.Step(1f / 60f, s_Floor);
@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void RestingCube_ThrownUp_LeavesTheFloor()
         {
             FemTestBody body = RestingCube(FemMaterialModel.CoRotational);
-            float radius = body.Parameters.ParticleRadius;
+            float radius = body.Parameters.Body.ParticleRadius;
             for (int step = 0; step < 30; step++)
                 body.Step(1f / 60f, s_Floor);
             for (int i = 0; i < body.Velocities.Length; i++)

@@ -262,9 +262,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemParameters p = FemParameters.Default;
             p.Model = model;
             p.Integrator = FemIntegrator.ImplicitEuler;
-            p.Substeps = substeps;
-            p.Acceleration = gravity;
-            p.SleepSpeed = 0f;
+            p.Body.Substeps = substeps;
+            p.Body.Acceleration = gravity;
+            p.Body.SleepSpeed = 0f;
             p.CgIterations = 500;
             p.CgTolerance = 1e-4f;
             return p;

@@ -126,8 +126,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void RestFactor_TakesFewerIterations_ForTheSameSolution(FemElementOrder order)
         {
             FemParameters p = FemParameters.Default;
-            p.SleepSpeed = 0f;
-            p.Substeps = 1;
+            p.Body.SleepSpeed = 0f;
+            p.Body.Substeps = 1;
             p.CgIterations = 2000;
             p.CgTolerance = 1e-6f;
             var plain = new FemTestBody(Beam(order), p);

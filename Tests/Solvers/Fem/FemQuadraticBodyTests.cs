@@ -24,7 +24,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             FemModelData data = FemTestBodies.Bake(FemTestBodies.Box(2, 2, 2, new float3(0.2f)), s_Jelly, null, FemElementOrder.Quadratic);
             FemParameters p = Implicit();
-            p.ParticleRadius = 0f;
+            p.Body.ParticleRadius = 0f;
             var body = new FemTestBody(data, p, new float3(0f, 0.3f, 0f));
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             for (int step = 0; step < 120; step++)
@@ -60,7 +60,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FemParameters p = Implicit();
             p.Integrator = FemIntegrator.Xpbd;
             p.Model = FemMaterialModel.NeoHookean;
-            var body = new FemTestBody(data, p, new float3(0f, 0.1f + p.ParticleRadius, 0f));
+            var body = new FemTestBody(data, p, new float3(0f, 0.1f + p.Body.ParticleRadius, 0f));
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             bool slept = false;
             for (int step = 0; step < 300 && !slept; step++)

@@ -90,8 +90,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 members[i] = i;
             ShapeMatchingModelData shape = ShapeMatchingModelData.Create(springs.RestPositions, springs.Masses, new[] { 0, n }, members, false);
             ShapeMatchingParameters sp = ShapeMatchingParameters.Default;
-            sp.Acceleration = float3.zero;
-            sp.SleepSpeed = 0f;
+            sp.Body.Acceleration = float3.zero;
+            sp.Body.SleepSpeed = 0f;
             MassSpringParameters mp = MassSpringParameters.Default;
             float dt = 1f / 60f;
             int substeps = ShapeMatchingSolver.Constants(sp.Sanitized(), dt).Substeps;

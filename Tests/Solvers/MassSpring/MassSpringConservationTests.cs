@@ -25,10 +25,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         static MassSpringParameters Parameters(MassSpringIntegrator integrator, bool gravity)
         {
             MassSpringParameters p = MassSpringTestBody.Plain(integrator);
-            p.Substeps = 8;
+            p.Body.Substeps = 8;
             p.CgTolerance = 1e-4f;
             p.Iterations = 2;
-            p.Acceleration = gravity ? new float3(0f, -9.81f, 0f) : float3.zero;
+            p.Body.Acceleration = gravity ? new float3(0f, -9.81f, 0f) : float3.zero;
             return p;
         }
 

@@ -55,11 +55,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             MassSpringParameters p = MassSpringParameters.Default;
             p.Integrator = integrator;
-            p.Substeps = 1;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
-            p.ParticleRadius = 0f;
-            p.MaxSpeed = maxSpeed;
+            p.Body.Substeps = 1;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
+            p.Body.ParticleRadius = 0f;
+            p.Body.MaxSpeed = maxSpeed;
             p.CgIterations = 100;
             p.CgTolerance = 1e-6f;
             return p;

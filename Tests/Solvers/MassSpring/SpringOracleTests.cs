@@ -95,7 +95,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 }
                 MassSpringParameters pa = MassSpringTestBody.Plain(MassSpringIntegrator.SymplecticEuler);
                 MassSpringParameters pb = MassSpringTestBody.Plain(MassSpringIntegrator.Verlet);
-                pa.Substeps = pb.Substeps = 4;
+                pa.Body.Substeps = pb.Body.Substeps = 4;
                 double maxDifference = 0.0;
                 for (int n = 0; n < 25; n++)
                 {

@@ -39,8 +39,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             MassSpringTestBody body = Chain(springs);
             MassSpringParameters p = MassSpringTestBody.Plain(MassSpringIntegrator.Xpbd);
-            p.Substeps = substeps;
-            p.Acceleration = new float3(G, 0f, 0f);
+            p.Body.Substeps = substeps;
+            p.Body.Acceleration = new float3(G, 0f, 0f);
             const int steps = 600, average = 60;
             double sum = 0;
             for (int s = 0; s < steps; s++)

@@ -61,7 +61,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 new ShapeMatchingInstance(sphere, Rubber(), new float3(3.6f, 6f, -0.5f), quaternion.identity),
             };
             ColliderShape[] colliders = Colliders();
-            float radius = ShapeMatchingParameters.Default.ParticleRadius;
+            float radius = ShapeMatchingParameters.Default.Body.ParticleRadius;
             for (int step = 0; step < 1800; step++)
             {
                 foreach (ShapeMatchingInstance body in bodies)

@@ -19,7 +19,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = LatticeBody.Create(new int3(4, 4, 4), 0.1f, 3, 1f);
             var p = ShapeMatchingParameters.Default;
             if (!canSleep)
-                p.SleepSpeed = 0f;
+                p.Body.SleepSpeed = 0f;
             return new ShapeMatchingInstance(model, p, position, quaternion.identity);
         }
 

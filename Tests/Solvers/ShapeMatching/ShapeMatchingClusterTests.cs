@@ -22,7 +22,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 var model = LatticeBody.Create(new int3(13, 2, 2), 0.1f, clusterSize, 1f);
                 var p = ShapeMatchingParameters.Default;
                 p.Mode = ShapeMatchingMode.Rigid;
-                p.SleepSpeed = 0f;
+                p.Body.SleepSpeed = 0f;
                 var body = new ShapeMatchingInstance(model, p, new float3(0f, 0.3f, 0f), quaternion.identity);
                 var support = new[] { ColliderShape.Box(new float3(0f, 0f, 0f), quaternion.identity, new float3(0.12f, 0.2f, 0.5f)) };
                 for (int step = 0; step < 240; step++)

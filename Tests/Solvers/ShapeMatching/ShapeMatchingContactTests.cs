@@ -33,7 +33,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             ShapeMatchingInstance body = Cube(new float3(0f, height, 0f), new float3(0f, downwardSpeed, 0f));
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
-            float radius = body.Parameters.ParticleRadius;
+            float radius = body.Parameters.Body.ParticleRadius;
             for (int step = 0; step < 240; step++)
             {
                 body.Step(1f / 60f, floor);
@@ -51,7 +51,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             ShapeMatchingInstance body = Cube(new float3(0f, 1.5f, 0f), new float3(0f, -30f, 0f));
             var step = new[] { ColliderShape.Box(new float3(0f, 0.5f, 0f), quaternion.identity, new float3(3f, 0.025f, 3f)) };
-            float top = 0.525f + body.Parameters.ParticleRadius;
+            float top = 0.525f + body.Parameters.Body.ParticleRadius;
             for (int i = 0; i < 120; i++)
             {
                 body.Step(1f / 60f, step);
@@ -142,8 +142,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 p.Mode = ShapeMatchingMode.Rigid;
                 p.Frequency = 30f;
                 p.DampingRatio = 1f;
-                p.Friction = mu;
-                p.SleepSpeed = 0f;
+                p.Body.Friction = mu;
+                p.Body.SleepSpeed = 0f;
                 quaternion tilt = quaternion.AxisAngle(new float3(0f, 0f, 1f), math.PI / 6f);
                 var body = new ShapeMatchingInstance(model, p, normal * 0.18f, tilt);
                 float3 start = body.Status.Center;
@@ -170,10 +170,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var model = ShapeMatchingModelData.Create(new[] { float3.zero }, new[] { 1f }, new[] { 0 }, new int[0], false);
             var p = ShapeMatchingParameters.Default;
-            p.Restitution = e;
-            p.Friction = 0f;
-            p.SleepSpeed = 0f;
-            float r = p.ParticleRadius;
+            p.Body.Restitution = e;
+            p.Body.Friction = 0f;
+            p.Body.SleepSpeed = 0f;
+            float r = p.Body.ParticleRadius;
             var body = new ShapeMatchingInstance(model, p, new float3(0f, 1f + r, 0f), quaternion.identity);
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             bool landed = false;
@@ -208,7 +208,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f, mode == ShapeMatchingMode.Quadratic);
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             ShapeMatchingInstance Drop() =>
                 new ShapeMatchingInstance(model, p, new float3(0f, 3f, 0f), quaternion.AxisAngle(new float3(1f, 0f, 0f), 0.5f));
@@ -218,7 +218,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             {
                 Assert.That(body.Step(dt, floor).Reset, Is.False, $"step {step}");
                 foreach (float3 x in body.Positions)
-                    Assert.That(x.y, Is.GreaterThanOrEqualTo(p.ParticleRadius - k_Tolerance));
+                    Assert.That(x.y, Is.GreaterThanOrEqualTo(p.Body.ParticleRadius - k_Tolerance));
                 // A loose bound that catches an explosion: no particle faster than ten steps of free fall
                 // (the body falls 3 m, reaching √(2g·3) ≈ 1.6 g·dt at dt = 0.5 s, and the pull only redistributes momentum).
                 foreach (float3 v in body.Velocities)
@@ -227,7 +227,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             ShapeMatchingInstance reference = Drop();
             for (int step = 0; step < 600; step++)
                 reference.Step(1f / 60f, floor);
-            float restHeight = 0.2f + p.ParticleRadius;
+            float restHeight = 0.2f + p.Body.ParticleRadius;
             float sag = restHeight - reference.Status.Center.y;
             Assert.That(sag, Is.GreaterThan(0f));
             Assert.That(body.Status.Center.y, Is.EqualTo(reference.Status.Center.y).Within(0.1f * sag + 1e-3f),

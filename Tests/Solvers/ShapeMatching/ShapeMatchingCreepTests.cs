@@ -29,11 +29,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             ShapeMatchingMaterial material = preset == Preset.Jelly ? ShapeMatchingMaterial.Jelly
                 : preset == Preset.Rubber ? ShapeMatchingMaterial.Rubber : ShapeMatchingMaterial.Clay;
             var p = material.ApplyTo(ShapeMatchingParameters.Default);
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var model = LatticeBody.Create(new int3(7, 7, 7), 0.1f, clusterSize, 1f);
             Assert.That(model.ClusterCount, Is.EqualTo(clusterSize == 3 ? 27 : 1), "clusters [0-2], [2-4], [4-6] on each axis, or one");
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
-            var body = new ShapeMatchingInstance(model, p, new float3(0f, 0.3f + p.ParticleRadius + 0.01f, 0f), quaternion.identity);
+            var body = new ShapeMatchingInstance(model, p, new float3(0f, 0.3f + p.Body.ParticleRadius + 0.01f, 0f), quaternion.identity);
             float dt = 1f / frameRate;
             int settle = 5 * frameRate, end = 20 * frameRate;
             float3 settled = float3.zero;

@@ -45,7 +45,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Mode = mode;
             p.Frequency = 16f;
             p.DampingRatio = 0.2f;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, new float3(0f, 5f, 0f), quaternion.identity);
             var rng = new Random(7u + (uint)kind);
             float v0 = 0f;
@@ -55,7 +55,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 v0 = math.max(v0, math.length(body.Velocities[i]));
             }
             const float dt = 1f / 60f;
-            float g = math.length(p.Acceleration);
+            float g = math.length(p.Body.Acceleration);
             int fallbacks = 0;
             for (int step = 1; step <= 300; step++)
             {

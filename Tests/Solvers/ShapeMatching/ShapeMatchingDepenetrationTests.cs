@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Tests.Solvers
     /// whole overlap in one substep is overlap / h: 0.27 m at h = 1/240 s is 65 m/s). A 1 kg, 0.4 m lattice body
     /// (linear, 9 Hz, ζ = 0.13, β = 0.5, no gravity) starts with up to 0.27 m of overlap inside a sphere or a rotated
     /// box, placed so that every overlapping particle leaves through the same side.
-    /// <para>Speed bound. A contact moves a particle out by at most <see cref="ShapeMatchingParameters.MaxDepenetrationSpeed"/>
+    /// <para>Speed bound. A contact moves a particle out by at most <see cref="ParticleBodySettings.MaxDepenetrationSpeed"/>
     /// v_d per second, and the body's goals move with its centre and rotation. Relative to its goal a particle therefore
     /// starts its free oscillation with a speed of at most v_d and a displacement of at most the overlap d₀ it had to
     /// leave (the push displaces it relative to the rest of the body by no more than that). The pull conserves
@@ -44,9 +44,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, clusterSize, 1f);
             var p = ShapeMatchingParameters.Default;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
-            p.MaxDepenetrationSpeed = maxDepenetrationSpeed;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
+            p.Body.MaxDepenetrationSpeed = maxDepenetrationSpeed;
             quaternion rotation = quaternion.AxisAngle(math.normalize(new float3(1f, 0.5f, 2f)), 0.4f);
             var center = new float3(1f, 2f, 3f);
             ColliderShape collider;
@@ -66,7 +66,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             }
             var colliders = new[] { collider };
             var body = new ShapeMatchingInstance(model, p, start, rotation);
-            float radius = p.ParticleRadius;
+            float radius = p.Body.ParticleRadius;
             double d0 = 0, overlapMoment = 0;
             for (int i = 0; i < body.Positions.Length; i++)
             {

@@ -45,8 +45,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Mode = mode;
             p.Beta = beta;
             p.DampingRatio = 0f;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             var center = new float3(0f, 1f, 0f);
             var body = new ShapeMatchingInstance(model, p, center, quaternion.identity);
             float3 omega = spin * math.normalize(new float3(0.3f, 1f, 0.2f));

@@ -29,10 +29,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f);
             var p = ShapeMatchingMaterial.Jelly.ApplyTo(ShapeMatchingParameters.Default);
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var offset = new float3(distance, 0f, 0f);
             // 0.25 and 0.125 m are exact at 100 km too (float32 spacing there: 2⁻⁷ m), so both bodies start at the same local position.
-            var start = new float3(0.25f, 0.2f + p.ParticleRadius + 0.02f, -0.125f);
+            var start = new float3(0.25f, 0.2f + p.Body.ParticleRadius + 0.02f, -0.125f);
             var near = new ShapeMatchingInstance(model, p, start, quaternion.identity);
             var far = new ShapeMatchingInstance(model, p, start + offset, quaternion.identity);
             Assert.That(far.Status.Origin, Is.EqualTo(offset));
@@ -74,11 +74,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f);
             var p = ShapeMatchingMaterial.Jelly.ApplyTo(ShapeMatchingParameters.Default);
-            p.SleepSpeed = 0f;
-            p.Friction = 0f;
+            p.Body.SleepSpeed = 0f;
+            p.Body.Friction = 0f;
             var floor = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             var velocity = new float3(4f, 0f, 0f);
-            float height = 0.2f + p.ParticleRadius;
+            float height = 0.2f + p.Body.ParticleRadius;
             var far = new ShapeMatchingInstance(model, p, new float3(60f, height, 0f), quaternion.identity, velocity);
             var near = new ShapeMatchingInstance(model, p, new float3(-4f, height, 0f), quaternion.identity, velocity);
             Assert.That(far.Status.Origin, Is.EqualTo(float3.zero), "60 m is within the rebase distance");

@@ -25,8 +25,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Mode = mode;
             p.Frequency = 16f;
             p.DampingRatio = 0.2f;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity);
             // Mirror x: all particles (det A = −1), or only those with x < 0 folded onto the other half.
             for (int i = 0; i < body.Positions.Length; i++)

@@ -21,9 +21,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
             p.Frequency = 16f;
-            p.Acceleration = float3.zero;
+            p.Body.Acceleration = float3.zero;
             p.DampingRatio = damping;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, new float3(0f, 1f, 0f), quaternion.identity);
             var rng = new Random(seed);
             float3 omega = rng.NextFloat3Direction() * 3f;
@@ -127,9 +127,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             var p = ShapeMatchingParameters.Default;
             p.Mode = ShapeMatchingMode.Rigid;
             p.Frequency = 100f;
-            p.Acceleration = float3.zero;
+            p.Body.Acceleration = float3.zero;
             p.DampingRatio = 0f;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.AxisAngle(new float3(0f, 0f, 1f), 0.3f));
             float3 omega = new float3(1f, 2f, -0.5f); // not a principal axis: the body tumbles
             for (int i = 0; i < body.Positions.Length; i++)

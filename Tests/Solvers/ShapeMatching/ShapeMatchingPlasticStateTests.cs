@@ -18,8 +18,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, clusterSize, 1f, mode == ShapeMatchingMode.Quadratic);
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             p.Plasticity = s_Clay;
             return new ShapeMatchingInstance(model, p, position, quaternion.identity, perInstanceQuadratic: perInstanceQuadratic);
         }
@@ -146,7 +146,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             const float maxDeformation = 0.2f;
             ShapeMatchingInstance body = Body(mode, clusterSize, perInstanceQuadratic: true, new float3(0f, 0.2f + 0.02f, 0f));
             body.Parameters.Plasticity = new PlasticityParameters { Yield = 0.05f, Creep = 10f, MaxDeformation = maxDeformation };
-            float radius = body.Parameters.ParticleRadius;
+            float radius = body.Parameters.Body.ParticleRadius;
             // Floor and a ceiling 0.24 m + 2 radii above it: 60 % of the 0.4 m height.
             var press = new[]
             {

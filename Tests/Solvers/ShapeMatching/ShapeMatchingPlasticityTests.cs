@@ -18,9 +18,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 3, 1f);
             var p = ShapeMatchingParameters.Default;
-            p.Acceleration = float3.zero;
+            p.Body.Acceleration = float3.zero;
             p.Plasticity = plasticity;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity);
             float s = math.sqrt(2f);
             for (int i = 0; i < body.Positions.Length; i++)
@@ -71,7 +71,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var model = LatticeBody.Create(new int3(5, 5, 5), 0.1f, 5, 1f, buildQuadratic: true);
             var p = ShapeMatchingParameters.Default;
             p.Mode = ShapeMatchingMode.Quadratic;
-            p.Acceleration = float3.zero;
+            p.Body.Acceleration = float3.zero;
             p.Plasticity = new PlasticityParameters { Yield = 0.05f, Creep = 20f, MaxDeformation = 0.3f };
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity, perInstanceQuadratic: true);
             for (int i = 0; i < body.Positions.Length; i++)

@@ -28,8 +28,8 @@ namespace SoftBodyDynamics.Tests.Solvers
                 var p = ShapeMatchingMaterial.Jelly.ApplyTo(ShapeMatchingParameters.Default);
                 p.Mode = mode;
                 p.Beta = beta;
-                p.SleepSpeed = 0f;
-                var body = new ShapeMatchingInstance(model, p, new float3(0f, 0.2f + p.ParticleRadius + 0.01f, 0f), quaternion.identity);
+                p.Body.SleepSpeed = 0f;
+                var body = new ShapeMatchingInstance(model, p, new float3(0f, 0.2f + p.Body.ParticleRadius + 0.01f, 0f), quaternion.identity);
                 for (int step = 0; step < 300; step++)
                     Assert.That(body.Step(1f / 60f, floor).Reset, Is.False);
                 return body;
@@ -63,8 +63,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Mode = ShapeMatchingMode.Quadratic;
             p.Beta = beta;
             p.DampingRatio = 0f;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity);
             var rng = new Unity.Mathematics.Random(5u);
             for (int i = 0; i < body.Positions.Length; i++)
@@ -133,8 +133,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Beta = beta;
             p.Frequency = 16f;
             p.DampingRatio = 0.1f;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, float3.zero, quaternion.identity);
             for (int i = 0; i < body.Positions.Length; i++)
                 if (!halfFoldedWithOverlappingClusters || body.Positions[i].x < 0f)

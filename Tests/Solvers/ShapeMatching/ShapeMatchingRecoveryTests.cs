@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var p = ShapeMatchingParameters.Default;
             p.Mode = mode;
-            p.Acceleration = float3.zero;
+            p.Body.Acceleration = float3.zero;
             return p;
         }
 

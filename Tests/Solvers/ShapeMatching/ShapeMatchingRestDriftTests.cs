@@ -38,8 +38,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.Mode = mode;
             p.Beta = beta;
             p.DampingRatio = 0f;
-            p.Acceleration = float3.zero;
-            p.SleepSpeed = 0f;
+            p.Body.Acceleration = float3.zero;
+            p.Body.SleepSpeed = 0f;
             var body = new ShapeMatchingInstance(model, p, new float3(distance + 0.3f, 1f, -0.2f), quaternion.identity);
             float extent = 0f;
             foreach (float3 x in body.Positions)

@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void SleepingBody_WakesWhenGravityChanges()
         {
             ShapeMatchingInstance body = SleepingCube();
-            body.Parameters.Acceleration = new float3(0f, 9.81f, 0f);
+            body.Parameters.Body.Acceleration = new float3(0f, 9.81f, 0f);
             ShapeMatchingStepReport r = body.Step(1f / 60f, s_Floor);
             Assert.That(r.WokeUp && r.Stepped, Is.True);
             for (int i = 0; i < 30; i++)

@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>
     /// Float64 finite-element reference for a cantilever: the box [0, L] × [0, h] × [0, w] (length along x, gravity
     /// −y), every node on x = 0 clamped, compressible Neo-Hookean by default
-    /// (Ψ = μ/2 (I_C − 3) − μ ln J + λ/2 (ln J)², <see cref="FemMaterial"/>), 27-node hexahedra (<see cref="FemModel"/>).
+    /// (Ψ = μ/2 (I_C − 3) − μ ln J + λ/2 (ln J)², <see cref="FemMaterial"/>), 27-node hexahedra (<see cref="FemReferenceModel"/>).
     /// <para>Resolution r = elements across the height; along the length and width round(L/h · r), round(w/h · r)
     /// (≥ 1), so elements stay near-cubic.</para>
     /// <para>Accuracy (measured, L = 1, h = w = 0.1, ν = 0.3, E = 1e9, ρ = 1000, g = 9.81, δ/L = 1.5·10⁻³): tip deflection
@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     public static class CantileverReference
     {
         /// <summary>The model: mesh, material and clamp.</summary>
-        public static FemModel Model(double length, double height, double width, double youngModulus, double poissonRatio,
+        public static FemReferenceModel Model(double length, double height, double width, double youngModulus, double poissonRatio,
             double density, int resolution, FemMaterialLaw law = FemMaterialLaw.NeoHookean)
         {
             if (resolution < 1)
@@ -75,7 +75,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int c = 0; c < 3; c++)
                     fixedDofs[node * 3 + c] = true;
             }
-            return new FemModel(mesh, new FemMaterial(law, youngModulus, poissonRatio), density, fixedDofs);
+            return new FemReferenceModel(mesh, new FemMaterial(law, youngModulus, poissonRatio), density, fixedDofs);
         }
 
         /// <summary>Tip-face centre node.</summary>
@@ -94,7 +94,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static CantileverStaticResult StaticTipDeflection(double length, double height, double width, double youngModulus,
             double poissonRatio, double density, double gravity, int resolution, FemMaterialLaw law = FemMaterialLaw.NeoHookean)
         {
-            FemModel model = Model(length, height, width, youngModulus, poissonRatio, density, resolution, law);
+            FemReferenceModel model = Model(length, height, width, youngModulus, poissonRatio, density, resolution, law);
             var u = new double[model.Mesh.DofCount];
             FemSolveReport report = Equilibrium(model, gravity, u);
             int tip = TipNode(model.Mesh);
@@ -108,7 +108,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             };
         }
 
-        static FemSolveReport Equilibrium(FemModel model, double gravity, double[] u)
+        static FemSolveReport Equilibrium(FemReferenceModel model, double gravity, double[] u)
         {
             double[] f = model.BodyForce(new[] { 0, -gravity, 0 });
             return new FemStaticSolver(model).Solve(u, f);
@@ -124,7 +124,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             double poissonRatio, double density, int resolution, double gravityForEquilibrium = 0,
             FemMaterialLaw law = FemMaterialLaw.NeoHookean)
         {
-            FemModel model = Model(length, height, width, youngModulus, poissonRatio, density, resolution, law);
+            FemReferenceModel model = Model(length, height, width, youngModulus, poissonRatio, density, resolution, law);
             var u = new double[model.Mesh.DofCount];
             if (gravityForEquilibrium > 0)
                 Equilibrium(model, gravityForEquilibrium, u);

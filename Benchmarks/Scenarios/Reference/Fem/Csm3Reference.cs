@@ -29,7 +29,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// interaction", §3.2): an elastic beam 0.35 × 0.02 m, ρ = 1000 kg/m³, E = 1.4·10⁶ Pa, ν = 0.4, St Venant–Kirchhoff,
     /// gravity g = 2 m/s² (−y) applied from rest, no damping; the tip-midpoint A displacement is reported as
     /// mean ± amplitude [frequency]: u_y = −63.607 ± 65.160 mm [1.0995 Hz], u_x = −14.305 ± 14.305 mm [2.1991 Hz].
-    /// <para>Here: 2-D plane strain, 9-node quadrilaterals (<see cref="FemModel"/>), the left end x = 0 clamped on a
+    /// <para>Here: 2-D plane strain, 9-node quadrilaterals (<see cref="FemReferenceModel"/>), the left end x = 0 clamped on a
     /// straight edge (the benchmark attaches it to a circle of radius 0.05; the straight clamp shortens the free
     /// edges by at most 0.001 m, ~0.3 % of L), Newmark average acceleration (<see cref="FemNewmark"/>, residual 1e-9).
     /// Statistics per complete cycle of the tip history (<see cref="OscillationStatistics"/>). The published u_x
@@ -75,7 +75,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 int node = mesh.Node(0, j, 0);
                 fixedDofs[node * 2] = fixedDofs[node * 2 + 1] = true;
             }
-            var model = new FemModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, YoungModulus, PoissonRatio), Density, fixedDofs);
+            var model = new FemReferenceModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, YoungModulus, PoissonRatio), Density, fixedDofs);
             var integrator = new FemNewmark(model, model.BodyForce(new[] { 0, -Gravity }), timeStep);
             int tip = mesh.Node(mesh.NodesX - 1, resolution, 0);
             int steps = (int)Math.Round(duration / timeStep);

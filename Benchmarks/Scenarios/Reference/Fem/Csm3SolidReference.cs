@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// The CSM3 beam of <see cref="Csm3Reference"/> made 3-D: the box [0, L] × [0, H] × [0, W] with a square section
     /// (W = H = 0.02 m), every node of the x = 0 face clamped, the free sides traction-free, St Venant–Kirchhoff
     /// (E = 1.4·10⁶ Pa, ν = 0.4, ρ = 1000 kg/m³), g = 2 m/s² along −y applied from rest, no damping; 27-node hexahedra
-    /// (<see cref="FemModel"/>), Newmark average acceleration (<see cref="FemNewmark"/>, residual 1e-9). Point A is the
+    /// (<see cref="FemReferenceModel"/>), Newmark average acceleration (<see cref="FemNewmark"/>, residual 1e-9). Point A is the
     /// mid node of the tip face; its u_x and u_y histories are measured by <see cref="OscillationStatistics"/>.
     /// <para>Why it differs from the published 2-D numbers: the benchmark is plane strain (ε_zz = 0), whose bending
     /// stiffness is E/(1 − ν²) per unit width, 1/(1 − ν²) = 1.19 times that of a beam with free sides (E I). For small
@@ -51,7 +51,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int c = 0; c < 3; c++)
                     fixedDofs[node * 3 + c] = true;
             }
-            var model = new FemModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, youngModulus, poissonRatio), density, fixedDofs);
+            var model = new FemReferenceModel(mesh, new FemMaterial(FemMaterialLaw.StVenantKirchhoff, youngModulus, poissonRatio), density, fixedDofs);
             var integrator = new FemNewmark(model, model.BodyForce(new[] { 0, -Csm3Reference.Gravity, 0 }), timeStep);
             int tip = mesh.Node(mesh.NodesX - 1, elementsY, elementsZ);
             int samples = (int)Math.Round(duration / (timeStep * sampleEvery));

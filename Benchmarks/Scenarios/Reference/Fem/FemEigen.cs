@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="model">The discretised body.</param>
         /// <param name="u">The displacement (m) to linearise about, every degree of freedom.</param>
         /// <param name="start">The start vector, every degree of freedom (e.g. a body force).</param>
-        public static (double OmegaSquared, double[] Mode, int Iterations) Lowest(FemModel model, double[] u, double[] start)
+        public static (double OmegaSquared, double[] Mode, int Iterations) Lowest(FemReferenceModel model, double[] u, double[] start)
         {
             int n = model.FreeCount;
             FemCsrMatrix k = model.NewMatrix();

@@ -13,7 +13,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// or to a Newton correction below 1e-10 of the step's displacement increment (round-off floor on fine meshes)
     /// (fixed degrees of freedom stay at their values, zero velocity and acceleration). Consistent mass.
     /// Optional stiffness-proportional (Rayleigh) damping of coefficient β: the Kelvin–Voigt viscous force
-    /// f_v(u, v) of <see cref="FemModel.AddViscousForce"/> (β K₀ v at small strain, so a mode of frequency ω has damping
+    /// f_v(u, v) of <see cref="FemReferenceModel.AddViscousForce"/> (β K₀ v at small strain, so a mode of frequency ω has damping
     /// ratio βω/2) joins the residual, r = M a₁ + f_int(u₁) + f_v(u₁, v₁) − f_ext with v₁ = 2/h (u₁ − u₀) − v₀, and
     /// (2/h) C(u₁) joins the Newton matrix (its part through F, of relative size ~ h‖Ḟ‖, is left to the iterations;
     /// the residual, hence the converged step, is exact). The start acceleration solves M a₀ = f_ext − f_int(u₀) − f_v(u₀, v₀).
@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Rayleigh coefficient β (s) of the viscous force; 0 = undamped.</summary>
         public readonly double DampingCoefficient;
 
-        readonly FemModel m_Model;
+        readonly FemReferenceModel m_Model;
         readonly FemCsrMatrix m_M, m_K, m_Keff;
         readonly FemBandSolver m_Solver;
         readonly double[] m_Fext, m_Fint, m_R, m_Du, m_Af, m_Ma, m_U0, m_V1;
@@ -54,7 +54,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="initialDisplacement">u₀ (m), every degree of freedom, or null for the rest shape.</param>
         /// <param name="initialVelocity">v₀ (m/s), every degree of freedom (zero on fixed ones), or null for rest.</param>
         /// <param name="dampingCoefficient">Rayleigh coefficient β (s) of the viscous force, ≥ 0; 0 = undamped.</param>
-        public FemNewmark(FemModel model, double[] externalForce, double timeStep, double[] initialDisplacement = null,
+        public FemNewmark(FemReferenceModel model, double[] externalForce, double timeStep, double[] initialDisplacement = null,
             double[] initialVelocity = null, double dampingCoefficient = 0)
         {
             if (!(timeStep > 0))
@@ -96,7 +96,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Advances one step h; returns the Newton report of the step.</summary>
         public FemSolveReport Step()
         {
-            FemModel model = m_Model;
+            FemReferenceModel model = m_Model;
             int n = model.FreeCount;
             int[] free = model.FreeDofs;
             double h = TimeStep, c0 = 4 / (h * h), c1 = 4 / h;
@@ -196,7 +196,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         double Forces(bool tangent, double h)
         {
-            FemModel model = m_Model;
+            FemReferenceModel model = m_Model;
             int[] free = model.FreeDofs;
             double energy = model.InternalForce(U, m_Fint, tangent ? m_K : null);
             if (double.IsNaN(energy) || !(DampingCoefficient > 0))
@@ -210,7 +210,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Kinetic energy ½ vᵀ M v (J), stored energy ∫ Ψ dV (J) and the work potential −f_extᵀ u (J).</summary>
         public (double Kinetic, double Stored, double Potential) Energies()
         {
-            FemModel model = m_Model;
+            FemReferenceModel model = m_Model;
             int n = model.FreeCount;
             double[] v = model.Gather(V);
             var mv = new double[n];

@@ -34,12 +34,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Initial number of equal load steps (default 1).</summary>
         public int InitialLoadSteps = 1;
 
-        readonly FemModel m_Model;
+        readonly FemReferenceModel m_Model;
         readonly FemCsrMatrix m_K;
         readonly FemBandSolver m_Solver;
 
         /// <param name="model">The discretised body.</param>
-        public FemStaticSolver(FemModel model)
+        public FemStaticSolver(FemReferenceModel model)
         {
             m_Model = model;
             m_K = model.NewMatrix();
@@ -54,7 +54,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="externalForce">f_ext (N), every degree of freedom (entries on fixed ones are ignored).</param>
         public FemSolveReport Solve(double[] u, double[] externalForce)
         {
-            FemModel model = m_Model;
+            FemReferenceModel model = m_Model;
             int n = model.FreeCount, dofs = model.Mesh.DofCount;
             double[] fext = model.Gather(externalForce);
             double fNorm = Norm(fext);

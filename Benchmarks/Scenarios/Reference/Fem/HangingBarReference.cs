@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>
     /// Float64 reference for a bar hanging under its own weight: the box [0, L] × [0, h] × [0, h] (axis x), every node of
     /// the x = 0 face clamped, the body force ρ g along +x (the bar's weight pulls it away from the clamp), compressible
-    /// Neo-Hookean (<see cref="FemMaterial"/>), 27-node hexahedra (<see cref="FemModel"/>), statics by Newton
+    /// Neo-Hookean (<see cref="FemMaterial"/>), 27-node hexahedra (<see cref="FemReferenceModel"/>), statics by Newton
     /// (<see cref="FemStaticSolver"/>). Resolution r = elements across the section; round(L/h · r) along the bar.
     /// The extension is the mean of u_x over the free end face x = L, integrated with the Q2 shape functions (Simpson's
     /// weights 1/6, 2/3, 1/6 per element edge).
@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="poissonRatio">ν.</param>
         /// <param name="density">ρ (kg/m³).</param>
         /// <param name="resolution">Elements across the section (≥ 1).</param>
-        public static FemModel Model(double length, double side, double youngModulus, double poissonRatio, double density, int resolution)
+        public static FemReferenceModel Model(double length, double side, double youngModulus, double poissonRatio, double density, int resolution)
         {
             if (resolution < 1)
                 throw new ArgumentOutOfRangeException(nameof(resolution));
@@ -53,7 +53,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 for (int c = 0; c < 3; c++)
                     fixedDofs[node * 3 + c] = true;
             }
-            return new FemModel(mesh, new FemMaterial(FemMaterialLaw.NeoHookean, youngModulus, poissonRatio), density, fixedDofs);
+            return new FemReferenceModel(mesh, new FemMaterial(FemMaterialLaw.NeoHookean, youngModulus, poissonRatio), density, fixedDofs);
         }
 
         /// <summary>
@@ -63,7 +63,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static HangingBarResult Extensions(double length, double side, double youngModulus, double poissonRatio, double density,
             double[] gravities, int resolution)
         {
-            FemModel model = Model(length, side, youngModulus, poissonRatio, density, resolution);
+            FemReferenceModel model = Model(length, side, youngModulus, poissonRatio, density, resolution);
             var solver = new FemStaticSolver(model);
             var u = new double[model.Mesh.DofCount];
             var result = new HangingBarResult

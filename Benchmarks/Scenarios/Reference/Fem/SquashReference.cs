@@ -48,7 +48,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="density">ρ (kg/m³).</param>
         /// <param name="resolution">Elements per half edge, ≥ 1.</param>
         /// <param name="plates">True: u_y also held on the top face (y = L/2), the frictionless plate of the squashed phase.</param>
-        public static FemModel Model(double size, double youngModulus, double poissonRatio, double density, int resolution, bool plates = false)
+        public static FemReferenceModel Model(double size, double youngModulus, double poissonRatio, double density, int resolution, bool plates = false)
         {
             if (resolution < 1)
                 throw new ArgumentOutOfRangeException(nameof(resolution));
@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 fixedDofs[node * 3 + 1] |= j == 0 || (plates && j == mesh.NodesY - 1);
                 fixedDofs[node * 3 + 2] |= k == 0;
             }
-            return new FemModel(mesh, new FemMaterial(Law, youngModulus, poissonRatio), density, fixedDofs);
+            return new FemReferenceModel(mesh, new FemMaterial(Law, youngModulus, poissonRatio), density, fixedDofs);
         }
 
         /// <summary>The homogeneous displacement u = (F − I) X with F = diag(s, λ, s) (m, every degree of freedom).</summary>
@@ -89,7 +89,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static (double[] Displacement, FemSolveReport Solve) Squashed(double size, double youngModulus, double poissonRatio,
             double density, int resolution, double axialStretch)
         {
-            FemModel model = Model(size, youngModulus, poissonRatio, density, resolution, plates: true);
+            FemReferenceModel model = Model(size, youngModulus, poissonRatio, density, resolution, plates: true);
             double[] u = Homogeneous(model.Mesh, axialStretch, 1 + poissonRatio * (1 - axialStretch));
             FemSolveReport report = new FemStaticSolver(model).Solve(u, new double[model.Mesh.DofCount]);
             return (u, report);
@@ -98,7 +98,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Lowest ω (rad/s) of the free cube at rest among the motions with the octant's symmetry that the squash excites (start vector: the homogeneous squash).</summary>
         public static double LowestSymmetricFrequency(double size, double youngModulus, double poissonRatio, double density, int resolution)
         {
-            FemModel model = Model(size, youngModulus, poissonRatio, density, resolution);
+            FemReferenceModel model = Model(size, youngModulus, poissonRatio, density, resolution);
             (double w2, _, _) = FemEigen.Lowest(model, new double[model.Mesh.DofCount], Homogeneous(model.Mesh, 0.5, 1.25));
             return Math.Sqrt(w2);
         }
@@ -114,7 +114,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static SquashHistory Release(double size, double youngModulus, double poissonRatio, double density, int resolution,
             double axialStretch, double beta, double interval, int stepsPerFrame, int frames, double tolerance = Tolerance)
         {
-            FemModel model = Model(size, youngModulus, poissonRatio, density, resolution);
+            FemReferenceModel model = Model(size, youngModulus, poissonRatio, density, resolution);
             FemBoxMesh mesh = model.Mesh;
             double lateral = UniaxialNeoHookean.Stress(axialStretch, youngModulus, poissonRatio, Law).LateralStretch;
             var run = new FemNewmark(model, new double[mesh.DofCount], interval / stepsPerFrame, Homogeneous(mesh, axialStretch, lateral),
@@ -166,7 +166,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         /// <summary>√(∫ρ|f|² dV / ∫ρ dV) = √(fᵀ M f / m) (consistent mass: exact for the Q2 field); f is zero on the fixed degrees of freedom.</summary>
-        static double Rms(FemModel model, FemCsrMatrix mass, double[] f, double totalMass, double[] free, double[] product)
+        static double Rms(FemReferenceModel model, FemCsrMatrix mass, double[] f, double totalMass, double[] free, double[] product)
         {
             for (int k = 0; k < free.Length; k++)
                 free[k] = f[model.FreeDofs[k]];

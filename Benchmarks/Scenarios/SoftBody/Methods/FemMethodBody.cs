@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         float m_CgResidual;
 
         public string Family { get; }
-        public string Knob => $"{m_Parameters.Substeps} substeps";
+        public string Knob => $"{m_Parameters.Body.Substeps} substeps";
         public int ParticleCount => m_Model.RestPositions.Length;
         public float3[] RestPositions => m_Model.RestPositions;
         public float[] Masses => m_Model.Masses;
@@ -43,18 +43,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             FemParameters p = FemParameters.Default;
             p.Model = model;
             p.Integrator = integrator;
-            p.Substeps = substeps;
+            p.Body.Substeps = substeps;
             if (cgIterations > 0)
                 p.CgIterations = cgIterations;
             if (cgTolerance > 0f)
                 p.CgTolerance = cgTolerance;
             if (iterations > 0)
                 p.Iterations = iterations;
-            p.SleepSpeed = 0f;
+            p.Body.SleepSpeed = 0f;
             p.DampingFrequency = setup.DampingFrequency;
-            p.ParticleRadius = setup.ParticleRadius;
-            p.Friction = setup.Friction;
-            p.Restitution = 0f;
+            p.Body.ParticleRadius = setup.ParticleRadius;
+            p.Body.Friction = setup.Friction;
+            p.Body.Restitution = 0f;
             m_Parameters = p;
             // The rest factor is built for the scene's frame and this body's substeps and damping.
             if (restFactor && integrator == FemIntegrator.ImplicitEuler)
@@ -92,7 +92,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Step(float dt, float3 gravity, ReadOnlySpan<ColliderShape> colliders)
         {
             FemParameters p = m_Parameters;
-            p.Acceleration = gravity;
+            p.Body.Acceleration = gravity;
             FemStepReport report = FemSolver.Step(m_Model.AsModel(), p, colliders, dt, State, ref m_Status);
             if (report.Integrator == FemIntegrator.ImplicitEuler && report.Step.Substeps > 0)
             {

@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         SoftBodyStatus m_Status;
 
         public string Family => "Hybrid SM + MS XPBD";
-        public string Knob => $"{m_ShapeParameters.Substeps} substeps";
+        public string Knob => $"{m_ShapeParameters.Body.Substeps} substeps";
         public int ParticleCount => m_Shape.ParticleCount;
         public float3[] RestPositions => m_Shape.RestPositions;
         public float[] Masses => m_Shape.Masses;
@@ -39,17 +39,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ClusterSet clusters = ClusterBuilder.Build(setup.Mesh.Positions, ShapeMatchingMethodBody.ClusterCells * cellSize * 1.001f);
             m_Shape = ShapeMatchingModelData.Create(setup.Mesh.Positions, m_Springs.Masses, clusters.Offsets, clusters.Particles, false, setup.Pinned);
             ShapeMatchingParameters sp = ShapeMatchingCalibration.For(half, setup.CalibrationLength, setup.CalibrationLoad, ShapeMatchingMode.Linear, ShapeMatchingParameters.Default);
-            sp.Substeps = substeps;
+            sp.Body.Substeps = substeps;
             sp.MaxSubstepPhase = 1e6f;
-            sp.SleepSpeed = 0f;
-            sp.ParticleRadius = setup.ParticleRadius;
-            sp.Friction = setup.Friction;
-            sp.Restitution = 0f;
+            sp.Body.SleepSpeed = 0f;
+            sp.Body.ParticleRadius = setup.ParticleRadius;
+            sp.Body.Friction = setup.Friction;
+            sp.Body.Restitution = 0f;
             m_ShapeParameters = sp;
             MassSpringParameters mp = MassSpringParameters.Default;
             mp.Integrator = MassSpringIntegrator.Xpbd;
-            mp.Substeps = substeps;
-            mp.SleepSpeed = 0f;
+            mp.Body.Substeps = substeps;
+            mp.Body.SleepSpeed = 0f;
             m_SpringParameters = mp;
             int n = m_Shape.ParticleCount;
             Positions = new float3[n];
@@ -71,9 +71,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Step(float dt, float3 gravity, ReadOnlySpan<ColliderShape> colliders)
         {
             ShapeMatchingParameters sp = m_ShapeParameters;
-            sp.Acceleration = gravity;
+            sp.Body.Acceleration = gravity;
             MassSpringParameters mp = m_SpringParameters;
-            mp.Acceleration = gravity;
+            mp.Body.Acceleration = gravity;
             HybridSolver.Step(m_Shape.AsModel(), sp, ShapeState, m_Springs.AsModel(), mp,
                 new MassSpringState(Positions, Velocities, m_Scratch, m_SpringScratch), colliders, dt, ref m_Status);
         }

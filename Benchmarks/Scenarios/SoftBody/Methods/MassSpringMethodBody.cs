@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         SoftBodyStatus m_Status;
 
         public string Family { get; }
-        public string Knob => $"{m_Parameters.Substeps} substeps";
+        public string Knob => $"{m_Parameters.Body.Substeps} substeps";
         public int ParticleCount => m_Model.RestPositions.Length;
         public float3[] RestPositions => m_Model.RestPositions;
         public float[] Masses => m_Model.Masses;
@@ -37,13 +37,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             CalibrationResidual = calibration.Residual;
             MassSpringParameters p = MassSpringParameters.Default;
             p.Integrator = integrator;
-            p.Substeps = substeps;
+            p.Body.Substeps = substeps;
             if (cgIterations > 0)
                 p.CgIterations = cgIterations;
-            p.SleepSpeed = 0f;
-            p.ParticleRadius = setup.ParticleRadius;
-            p.Friction = setup.Friction;
-            p.Restitution = 0f;
+            p.Body.SleepSpeed = 0f;
+            p.Body.ParticleRadius = setup.ParticleRadius;
+            p.Body.Friction = setup.Friction;
+            p.Body.Restitution = 0f;
             m_Parameters = p;
             Family = "MS " + Name(integrator);
             int n = m_Model.RestPositions.Length;
@@ -69,7 +69,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Step(float dt, float3 gravity, ReadOnlySpan<ColliderShape> colliders)
         {
             MassSpringParameters p = m_Parameters;
-            p.Acceleration = gravity;
+            p.Body.Acceleration = gravity;
             MassSpringSolver.Step(m_Model.AsModel(), p, colliders, dt, State, ref m_Status);
         }
 

@@ -22,7 +22,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         SoftBodyStatus m_Status;
 
         public string Family { get; }
-        public string Knob => $"{m_Parameters.Substeps} substeps";
+        public string Knob => $"{m_Parameters.Body.Substeps} substeps";
         public int ParticleCount => m_Model.ParticleCount;
         public float3[] RestPositions => m_Model.RestPositions;
         public float[] Masses => m_Model.Masses;
@@ -44,12 +44,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             ShapeMatchingParameters p = ShapeMatchingCalibration.For(setup.Material, setup.CalibrationLength, setup.CalibrationLoad, mode, ShapeMatchingParameters.Default);
             if (!float.IsNaN(frequency))
                 p.Frequency = frequency;
-            p.Substeps = substeps;
+            p.Body.Substeps = substeps;
             p.MaxSubstepPhase = 1e6f;
-            p.SleepSpeed = 0f;
-            p.ParticleRadius = setup.ParticleRadius;
-            p.Friction = setup.Friction;
-            p.Restitution = 0f;
+            p.Body.SleepSpeed = 0f;
+            p.Body.ParticleRadius = setup.ParticleRadius;
+            p.Body.Friction = setup.Friction;
+            p.Body.Restitution = 0f;
             p.Plasticity = plasticity;
             m_Parameters = p;
             Family = $"SM {mode.ToString().ToLowerInvariant()}";
@@ -71,7 +71,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public void Step(float dt, float3 gravity, ReadOnlySpan<ColliderShape> colliders)
         {
             ShapeMatchingParameters p = m_Parameters;
-            p.Acceleration = gravity;
+            p.Body.Acceleration = gravity;
             ShapeMatchingSolver.Step(m_Model.AsModel(), p, colliders, dt, State, ref m_Status);
         }
 

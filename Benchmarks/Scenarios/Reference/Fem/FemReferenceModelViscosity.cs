@@ -2,7 +2,7 @@ using System;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
-    public sealed partial class FemModel
+    public sealed partial class FemReferenceModel
     {
         /// <summary>
         /// Adds the Kelvin–Voigt viscous forces f_v = ∫ P_v(F, Ḟ) ∇N dV (N; <see cref="FemViscosity"/>, Ḟ = Σ_a v_a ⊗ ∇N_a)

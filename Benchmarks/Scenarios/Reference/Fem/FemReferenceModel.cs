@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// the full 3 × 3 × 3 rule integrates their stiffness exactly (see <see cref="CantileverReference"/> for the observed
     /// mesh convergence).
     /// </summary>
-    public sealed partial class FemModel
+    public sealed partial class FemReferenceModel
     {
         /// <summary>The mesh.</summary>
         public readonly FemBoxMesh Mesh;
@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="material">The material law and moduli.</param>
         /// <param name="density">ρ (kg/m³).</param>
         /// <param name="isFixed">Per global degree of freedom (node·Dimension + component): true if prescribed.</param>
-        public FemModel(FemBoxMesh mesh, in FemMaterial material, double density, bool[] isFixed)
+        public FemReferenceModel(FemBoxMesh mesh, in FemMaterial material, double density, bool[] isFixed)
         {
             Mesh = mesh;
             Material = material;
