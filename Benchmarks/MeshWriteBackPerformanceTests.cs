@@ -34,7 +34,7 @@ namespace SoftBodyDynamics.Benchmarks
         World m_World;
         Mesh m_Source;
         int m_VertexCount;
-        BlobAssetReference<SoftBodyShapeBlob> m_Shape;
+        BlobAssetReference<ShapeMatchingShapeBlob> m_Shape;
         readonly List<Mesh> m_Copies = new List<Mesh>();
         readonly List<Entity> m_Bodies = new List<Entity>();
 
@@ -48,7 +48,7 @@ namespace SoftBodyDynamics.Benchmarks
             m_Source.vertices = ToVector3(vertices);
             m_Source.normals = ToVector3(normals);
             m_Source.triangles = triangles;
-            m_Shape = SoftBodyShapeBlobFactory.Create(build.Model, build.VertexToParticle, triangles, Allocator.Persistent);
+            m_Shape = ShapeMatchingShapeBlobFactory.Create(build.Model, build.VertexToParticle, triangles, Allocator.Persistent);
         }
 
         [TearDown]
@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Benchmarks
         public void MeshWriteBack_Frame([ValueSource(typeof(MeshWriteBackBody), nameof(MeshWriteBackBody.BodyCounts))] int bodies)
         {
             EntityManager manager = m_World.EntityManager;
-            SystemHandle initialization = m_World.CreateSystem<SoftBodyInitializationSystem>();
+            SystemHandle initialization = m_World.CreateSystem<ShapeMatchingInitializationSystem>();
             SystemHandle write = m_World.CreateSystem<SoftBodyMeshWriteSystem>();
             for (int b = 0; b < bodies; b++)
             {
@@ -127,7 +127,7 @@ namespace SoftBodyDynamics.Benchmarks
                     for (int b = 0; b < bodies; b++)
                     {
                         Entity body = manager.CreateEntity();
-                        manager.AddComponentData(body, new SoftBodyShape { Blob = m_Shape });
+                        manager.AddComponentData(body, new ShapeMatchingShape { Blob = m_Shape });
                         manager.AddComponentData(body, new SoftBodyRenderMesh { Mesh = m_Source });
                         manager.AddComponentData(body, new MaterialMeshInfo());
                         manager.AddComponentData(body, new RenderBounds());

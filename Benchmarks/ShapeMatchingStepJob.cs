@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Benchmarks
 {
     /// <summary>
     /// One <see cref="ShapeMatchingSolver.Step"/> of one body as a Burst job, on the data a user's body lives in:
-    /// the shape in a <see cref="SoftBodyShapeBlob"/> (the baked blob, read through <c>AsModel()</c> as the
+    /// the shape in a <see cref="ShapeMatchingShapeBlob"/> (the baked blob, read through <c>AsModel()</c> as the
     /// simulation system does) and the state in native arrays viewed as spans with
     /// <see cref="NativeArray{T}.AsSpan"/>. A thin wrapper: the parameters arrive whole, built by the shared
     /// scenario code, so the job does not change when their fields do. Compiled synchronously so the first timed
@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.Benchmarks
     public struct ShapeMatchingStepJob : IJob
     {
         /// <summary>The body's shape (rest positions, masses, clusters, rest data).</summary>
-        public BlobAssetReference<SoftBodyShapeBlob> Shape;
+        public BlobAssetReference<ShapeMatchingShapeBlob> Shape;
         /// <summary>The body's parameters, as the scenario builds them.</summary>
         public ShapeMatchingParameters Parameters;
         /// <summary>Static colliders in world space.</summary>
@@ -36,16 +36,16 @@ namespace SoftBodyDynamics.Benchmarks
         /// <summary>Scratch of <see cref="ShapeMatchingState.ScratchPerParticle"/> × particles.</summary>
         public NativeArray<float3> Scratch;
         /// <summary>The body's status, one element, read and written by the step.</summary>
-        public NativeArray<SoftBodyStatus> Status;
+        public NativeArray<ParticleBodyStatus> Status;
         /// <summary>The report of the last step, one element.</summary>
         public NativeArray<ShapeMatchingStepReport> Report;
 
         public void Execute()
         {
-            ref SoftBodyShapeBlob shape = ref Shape.Value;
+            ref ShapeMatchingShapeBlob shape = ref Shape.Value;
             var state = ShapeMatchingState.FromScratch(Positions.AsSpan(), Velocities.AsSpan(), Clusters.AsSpan(), default,
                 Scratch.AsSpan());
-            SoftBodyStatus status = Status[0];
+            ParticleBodyStatus status = Status[0];
             Report[0] = ShapeMatchingSolver.Step(shape.AsModel(), Parameters, Colliders.AsReadOnlySpan(), DeltaTime, state, ref status);
             Status[0] = status;
         }
@@ -57,11 +57,11 @@ namespace SoftBodyDynamics.Benchmarks
     /// </summary>
     public sealed class ShapeMatchingJobBody : IDisposable
     {
-        BlobAssetReference<SoftBodyShapeBlob> m_Shape;
+        BlobAssetReference<ShapeMatchingShapeBlob> m_Shape;
         NativeArray<ColliderShape> m_Colliders;
         NativeArray<float3> m_Positions, m_Velocities, m_Scratch;
         NativeArray<ClusterState> m_Clusters;
-        NativeArray<SoftBodyStatus> m_Status;
+        NativeArray<ParticleBodyStatus> m_Status;
         NativeArray<ShapeMatchingStepReport> m_Report;
 
         /// <summary>The job over this body's memory; run it as often as needed.</summary>
@@ -73,13 +73,13 @@ namespace SoftBodyDynamics.Benchmarks
         /// <param name="deltaTime">Step length (s).</param>
         public ShapeMatchingJobBody(Scenarios.ShapeMatchingInstance body, ColliderShape[] colliders, float deltaTime)
         {
-            m_Shape = SoftBodyShapeBlobFactory.Create(body.Model, null, null, Allocator.Persistent);
+            m_Shape = ShapeMatchingShapeBlobFactory.Create(body.Model, null, null, Allocator.Persistent);
             m_Colliders = new NativeArray<ColliderShape>(colliders, Allocator.Persistent);
             m_Positions = new NativeArray<float3>(body.Positions, Allocator.Persistent);
             m_Velocities = new NativeArray<float3>(body.Velocities, Allocator.Persistent);
             m_Clusters = new NativeArray<ClusterState>(body.Clusters, Allocator.Persistent);
             m_Scratch = new NativeArray<float3>(ShapeMatchingState.ScratchPerParticle * body.Model.ParticleCount, Allocator.Persistent);
-            m_Status = new NativeArray<SoftBodyStatus>(new[] { body.Status }, Allocator.Persistent);
+            m_Status = new NativeArray<ParticleBodyStatus>(new[] { body.Status }, Allocator.Persistent);
             m_Report = new NativeArray<ShapeMatchingStepReport>(1, Allocator.Persistent);
             Job = new ShapeMatchingStepJob
             {

@@ -43,7 +43,7 @@ namespace SoftBodyDynamics.Benchmarks
             var colliders = new NativeArray<ColliderShape>(new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) }, Allocator.Persistent);
             var positions = new NativeArray<float3>(n, Allocator.Persistent);
             var velocities = new NativeArray<float3>(n, Allocator.Persistent);
-            var status = new NativeArray<SoftBodyStatus>(1, Allocator.Persistent);
+            var status = new NativeArray<ParticleBodyStatus>(1, Allocator.Persistent);
             var report = new NativeArray<ParticleStepReport>(1, Allocator.Persistent);
             var job = new MassSpringStepJob
             {
@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Benchmarks
                 StepCycleMeasure.Steps(() => job.Run(), () =>
                     {
                         var state = MassSpringState.FromScratch(positions.AsSpan(), velocities.AsSpan(), default, default);
-                        MassSpringSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out SoftBodyStatus placed);
+                        MassSpringSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out ParticleBodyStatus placed);
                         status[0] = placed;
                     },
                     k_CycleSteps, $"MassSpring {integrator} x{n} Burst job step", k_WarmupCount, k_MeasurementCount);
@@ -93,7 +93,7 @@ namespace SoftBodyDynamics.Benchmarks
             var positions = new NativeArray<float3>(n, Allocator.Persistent);
             var velocities = new NativeArray<float3>(n, Allocator.Persistent);
             var rotations = new NativeArray<quaternion>(e, Allocator.Persistent);
-            var status = new NativeArray<SoftBodyStatus>(1, Allocator.Persistent);
+            var status = new NativeArray<ParticleBodyStatus>(1, Allocator.Persistent);
             var report = new NativeArray<FemStepReport>(1, Allocator.Persistent);
             var job = new FemStepJob
             {
@@ -108,7 +108,7 @@ namespace SoftBodyDynamics.Benchmarks
                 StepCycleMeasure.Steps(() => job.Run(), () =>
                     {
                         var state = new FemState(positions.AsSpan(), velocities.AsSpan(), rotations.AsSpan(), default, default, default, default, default, default);
-                        FemSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out SoftBodyStatus placed);
+                        FemSolver.Initialize(shape.Value.AsModel(), state, k_Start, quaternion.identity, float3.zero, out ParticleBodyStatus placed);
                         status[0] = placed;
                     },
                     k_CycleSteps, $"Fem {materialModel} {integrator} x{n} Burst job step", k_WarmupCount, k_MeasurementCount);

@@ -27,14 +27,14 @@ namespace SoftBodyDynamics.Benchmarks
         /// <summary><see cref="MassSpringState.ScratchPerSpring"/> × springs.</summary>
         public NativeArray<float3> SpringScratch;
         /// <summary>The body's status and the last report, one element each.</summary>
-        public NativeArray<SoftBodyStatus> Status;
+        public NativeArray<ParticleBodyStatus> Status;
         public NativeArray<ParticleStepReport> Report;
 
         public void Execute()
         {
             ref MassSpringShapeBlob shape = ref Shape.Value;
             var state = MassSpringState.FromScratch(Positions.AsSpan(), Velocities.AsSpan(), Scratch.AsSpan(), SpringScratch.AsSpan());
-            SoftBodyStatus status = Status[0];
+            ParticleBodyStatus status = Status[0];
             Report[0] = MassSpringSolver.Step(shape.AsModel(), Parameters, Colliders.AsReadOnlySpan(), DeltaTime, state, ref status);
             Status[0] = status;
         }
@@ -58,14 +58,14 @@ namespace SoftBodyDynamics.Benchmarks
         /// <summary><see cref="FemState.ScratchPerElement"/> × elements.</summary>
         public NativeArray<float3> ElementScratch;
         /// <summary>The body's status and the last report, one element each.</summary>
-        public NativeArray<SoftBodyStatus> Status;
+        public NativeArray<ParticleBodyStatus> Status;
         public NativeArray<FemStepReport> Report;
 
         public void Execute()
         {
             ref FemShapeBlob shape = ref Shape.Value;
             var state = FemState.FromScratch(Positions.AsSpan(), Velocities.AsSpan(), Rotations.AsSpan(), Scratch.AsSpan(), ElementScratch.AsSpan());
-            SoftBodyStatus status = Status[0];
+            ParticleBodyStatus status = Status[0];
             Report[0] = FemSolver.Step(shape.AsModel(), Parameters, Colliders.AsReadOnlySpan(), DeltaTime, state, ref status);
             Status[0] = status;
         }

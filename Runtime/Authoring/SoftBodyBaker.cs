@@ -49,20 +49,20 @@ namespace SoftBodyDynamics.Authoring
             }
 
             SoftBodyBuildResult result = build.Result;
-            BlobAssetReference<SoftBodyShapeBlob> blob = SoftBodyShapeBlobFactory.Create(result.Model, result.VertexToParticle,
+            BlobAssetReference<ShapeMatchingShapeBlob> blob = ShapeMatchingShapeBlobFactory.Create(result.Model, result.VertexToParticle,
                 build.Mesh.Triangles, Allocator.Persistent);
             AddBlobAsset(ref blob, out _);
 
             ShapeMatchingParameters parameters = authoring.Parameters;
-            AddComponent(entity, new SoftBodyShape { Blob = blob });
-            AddComponent(entity, new SoftBodySettings { Value = parameters });
+            AddComponent(entity, new ShapeMatchingShape { Blob = blob });
+            AddComponent(entity, new ShapeMatchingSettings { Value = parameters });
             AddComponent(entity, ParticleBodyState.Unstepped);
             AddComponent(entity, ShapeMatchingDiagnostics.Unstepped);
             AddBuffer<SoftBodyPosition>(entity);
             AddBuffer<SoftBodyVelocity>(entity);
-            AddBuffer<SoftBodyCluster>(entity);
+            AddBuffer<ShapeMatchingCluster>(entity);
             if (SoftBodyArchetype.NeedsQuadraticInverse(parameters, result.Model.QuadraticInverse.Length))
-                AddBuffer<SoftBodyQuadraticInverse>(entity);
+                AddBuffer<ShapeMatchingQuadraticInverse>(entity);
             AddComponent<SoftBodyUninitialized>(entity);
             SetComponentEnabled<SoftBodyUninitialized>(entity, true);
             AddComponent(entity, new SoftBodyImpulse());

@@ -63,11 +63,11 @@ namespace SoftBodyDynamics
         public int PointCount => ElementNodes.Length > 0 ? QuadraticTet.PointCount * Elements.Length : Elements.Length;
 
         /// <summary>The solver's view of this blob (spans over blob memory, no copy). Call it on the blob in place.</summary>
-        public FemModel AsModel() => new FemModel(SoftBodyShapeBlob.View(ref RestPositions), SoftBodyShapeBlob.View(ref Masses),
-            SoftBodyShapeBlob.View(ref InverseMasses), SoftBodyShapeBlob.View(ref Elements), SoftBodyShapeBlob.View(ref IncidenceOffsets),
-            SoftBodyShapeBlob.View(ref IncidenceSlots), SoftBodyShapeBlob.View(ref ColorOffsets), SoftBodyShapeBlob.View(ref ColorElements),
-            SoftBodyShapeBlob.View(ref StiffnessDiagonal), RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency,
-            SoftBodyShapeBlob.View(ref ElementNodes), SoftBodyShapeBlob.View(ref PointGradients), SoftBodyShapeBlob.View(ref PointVolumes),
-            SoftBodyShapeBlob.View(ref FactorNodes), SoftBodyShapeBlob.View(ref FactorRowStarts), SoftBodyShapeBlob.View(ref FactorValues));
+        public FemModel AsModel() => new FemModel(ShapeMatchingShapeBlob.View(ref RestPositions), ShapeMatchingShapeBlob.View(ref Masses),
+            ShapeMatchingShapeBlob.View(ref InverseMasses), ShapeMatchingShapeBlob.View(ref Elements), ShapeMatchingShapeBlob.View(ref IncidenceOffsets),
+            ShapeMatchingShapeBlob.View(ref IncidenceSlots), ShapeMatchingShapeBlob.View(ref ColorOffsets), ShapeMatchingShapeBlob.View(ref ColorElements),
+            ShapeMatchingShapeBlob.View(ref StiffnessDiagonal), RestCenter, Mu, Lambda, DampingRatio, DefaultDampingFrequency,
+            ShapeMatchingShapeBlob.View(ref ElementNodes), ShapeMatchingShapeBlob.View(ref PointGradients), ShapeMatchingShapeBlob.View(ref PointVolumes),
+            ShapeMatchingShapeBlob.View(ref FactorNodes), ShapeMatchingShapeBlob.View(ref FactorRowStarts), ShapeMatchingShapeBlob.View(ref FactorValues));
     }
 }

@@ -38,9 +38,9 @@ namespace SoftBodyDynamics
         public int SpringCount => Springs.Length;
 
         /// <summary>The solver's view of this blob (spans over blob memory, no copy). Call it on the blob in place.</summary>
-        public MassSpringModel AsModel() => new MassSpringModel(SoftBodyShapeBlob.View(ref RestPositions), RestCenter,
-            SoftBodyShapeBlob.View(ref Masses), SoftBodyShapeBlob.View(ref InverseMasses), SoftBodyShapeBlob.View(ref Springs),
-            SoftBodyShapeBlob.View(ref IncidenceOffsets), SoftBodyShapeBlob.View(ref IncidenceSlots),
-            SoftBodyShapeBlob.View(ref ColorOffsets), SoftBodyShapeBlob.View(ref ColorSprings));
+        public MassSpringModel AsModel() => new MassSpringModel(ShapeMatchingShapeBlob.View(ref RestPositions), RestCenter,
+            ShapeMatchingShapeBlob.View(ref Masses), ShapeMatchingShapeBlob.View(ref InverseMasses), ShapeMatchingShapeBlob.View(ref Springs),
+            ShapeMatchingShapeBlob.View(ref IncidenceOffsets), ShapeMatchingShapeBlob.View(ref IncidenceSlots),
+            ShapeMatchingShapeBlob.View(ref ColorOffsets), ShapeMatchingShapeBlob.View(ref ColorSprings));
     }
 }

@@ -11,7 +11,7 @@ namespace SoftBodyDynamics
     public struct ParticleBodyState : IComponentData
     {
         /// <summary>Centre of mass (m, world) and best-fit rotation after the last good step; sleep state; reset count.</summary>
-        public SoftBodyStatus Status;
+        public ParticleBodyStatus Status;
         /// <summary>What the last step did (stepped, slept, reset by the NaN guard and at which particle, contacts, substeps).</summary>
         public ParticleStepReport LastReport;
 

@@ -13,35 +13,35 @@ namespace SoftBodyDynamics
     public static class SoftBodyArchetype
     {
         /// <summary>
-        /// True when a body needs its own <see cref="SoftBodyQuadraticInverse"/> buffer: quadratic mode with
+        /// True when a body needs its own <see cref="ShapeMatchingQuadraticInverse"/> buffer: quadratic mode with
         /// plasticity on a blob built with the quadratic inverses.
         /// </summary>
         /// <param name="parameters">The body's parameters.</param>
-        /// <param name="quadraticBlocks">Length of <see cref="SoftBodyShapeBlob.QuadraticInverse"/>.</param>
+        /// <param name="quadraticBlocks">Length of <see cref="ShapeMatchingShapeBlob.QuadraticInverse"/>.</param>
         public static bool NeedsQuadraticInverse(in ShapeMatchingParameters parameters, int quadraticBlocks) =>
             parameters.Mode == ShapeMatchingMode.Quadratic && parameters.Plasticity.Enabled && quadraticBlocks > 0;
 
         /// <summary>
         /// Makes <paramref name="entity"/> a soft body of <paramref name="shape"/>. The rest shape is placed at
         /// the entity's <see cref="LocalTransform"/> (identity is added when it has none) by the next update
-        /// of <see cref="SoftBodyInitializationSystem"/>. Structural change: call it on the main thread.
+        /// of <see cref="ShapeMatchingInitializationSystem"/>. Structural change: call it on the main thread.
         /// </summary>
         /// <param name="entityManager">The world's entity manager.</param>
         /// <param name="entity">A root entity (soft bodies simulate in world space).</param>
         /// <param name="shape">The blob; the caller keeps ownership of it.</param>
         /// <param name="parameters">The body's tunables.</param>
-        public static void AddComponents(EntityManager entityManager, Entity entity, BlobAssetReference<SoftBodyShapeBlob> shape,
+        public static void AddComponents(EntityManager entityManager, Entity entity, BlobAssetReference<ShapeMatchingShapeBlob> shape,
             in ShapeMatchingParameters parameters)
         {
-            entityManager.AddComponentData(entity, new SoftBodyShape { Blob = shape });
-            entityManager.AddComponentData(entity, new SoftBodySettings { Value = parameters });
+            entityManager.AddComponentData(entity, new ShapeMatchingShape { Blob = shape });
+            entityManager.AddComponentData(entity, new ShapeMatchingSettings { Value = parameters });
             entityManager.AddComponentData(entity, ParticleBodyState.Unstepped);
             entityManager.AddComponentData(entity, ShapeMatchingDiagnostics.Unstepped);
             entityManager.AddBuffer<SoftBodyPosition>(entity);
             entityManager.AddBuffer<SoftBodyVelocity>(entity);
-            entityManager.AddBuffer<SoftBodyCluster>(entity);
+            entityManager.AddBuffer<ShapeMatchingCluster>(entity);
             if (NeedsQuadraticInverse(parameters, shape.Value.QuadraticInverse.Length))
-                entityManager.AddBuffer<SoftBodyQuadraticInverse>(entity);
+                entityManager.AddBuffer<ShapeMatchingQuadraticInverse>(entity);
             entityManager.AddComponent<SoftBodyUninitialized>(entity);
             entityManager.SetComponentEnabled<SoftBodyUninitialized>(entity, true);
             entityManager.AddComponent<SoftBodyImpulse>(entity);

@@ -35,12 +35,12 @@ namespace SoftBodyDynamics
         public int NodeCount => RestNodePositions.Length;
 
         /// <summary>Render vertices' embedding as a span over blob memory (call on the blob in place).</summary>
-        public ReadOnlySpan<EmbeddedVertex> VerticesSpan => SoftBodyShapeBlob.View(ref Vertices);
+        public ReadOnlySpan<EmbeddedVertex> VerticesSpan => ShapeMatchingShapeBlob.View(ref Vertices);
         /// <summary>Rest normals as a span over blob memory.</summary>
-        public ReadOnlySpan<float3> RestNormalsSpan => SoftBodyShapeBlob.View(ref RestNormals);
+        public ReadOnlySpan<float3> RestNormalsSpan => ShapeMatchingShapeBlob.View(ref RestNormals);
         /// <summary>Edge nodes as a span over blob memory (empty unless quadratic).</summary>
-        public ReadOnlySpan<int> EdgeNodesSpan => SoftBodyShapeBlob.View(ref EdgeNodes);
+        public ReadOnlySpan<int> EdgeNodesSpan => ShapeMatchingShapeBlob.View(ref EdgeNodes);
         /// <summary>Rest nodes as a span over blob memory.</summary>
-        public ReadOnlySpan<float3> RestNodePositionsSpan => SoftBodyShapeBlob.View(ref RestNodePositions);
+        public ReadOnlySpan<float3> RestNodePositionsSpan => ShapeMatchingShapeBlob.View(ref RestNodePositions);
     }
 }

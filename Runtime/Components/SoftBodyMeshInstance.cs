@@ -15,7 +15,7 @@ namespace SoftBodyDynamics
         public UnityObjectRef<Mesh> Mesh;
         /// <summary>The mesh's id in Entities Graphics (<c>EntitiesGraphicsSystem.RegisterMesh</c>).</summary>
         public BatchMeshID MeshId;
-        /// <summary><see cref="SoftBodyDynamics.Solvers.SoftBodyStatus.StepCount"/> the vertices were last computed for.</summary>
+        /// <summary><see cref="SoftBodyDynamics.Solvers.ParticleBodyStatus.StepCount"/> the vertices were last computed for.</summary>
         public uint DeformedStep;
         /// <summary>True once the vertices have been computed at least once.</summary>
         public bool Deformed;

@@ -19,7 +19,7 @@ namespace SoftBodyDynamics
     /// <see cref="FluidSettings.Readback"/> says, never stalling the frame. Runs only while a fluid has a compute shader.
     /// </summary>
     [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
-    [UpdateAfter(typeof(SoftBodySimulationSystem))]
+    [UpdateAfter(typeof(ShapeMatchingSimulationSystem))]
     [UpdateAfter(typeof(MassSpringSimulationSystem))]
     [UpdateAfter(typeof(FemSimulationSystem))]
     [UpdateBefore(typeof(FluidSimulationSystem))]

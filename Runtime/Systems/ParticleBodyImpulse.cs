@@ -9,9 +9,9 @@ namespace SoftBodyDynamics
     {
         /// <summary>
         /// Adds <paramref name="impulse"/> to every velocity: Δvᵢ = Δv + Δω × (xᵢ − c), with c the centre of mass in the
-        /// positions' frame (<see cref="SoftBodyStatus.LocalCenter"/>), and wakes the body.
+        /// positions' frame (<see cref="ParticleBodyStatus.LocalCenter"/>), and wakes the body.
         /// </summary>
-        public static void Apply(ref SoftBodyStatus status, DynamicBuffer<SoftBodyPosition> positions,
+        public static void Apply(ref ParticleBodyStatus status, DynamicBuffer<SoftBodyPosition> positions,
             DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse)
         {
             var x = positions.Reinterpret<float3>().AsNativeArray();

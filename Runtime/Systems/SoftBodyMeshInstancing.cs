@@ -23,7 +23,7 @@ namespace SoftBodyDynamics
 
         /// <summary>Creates the deformable copy of <paramref name="source"/>, or returns null and an error message.</summary>
         /// <param name="source">A readable mesh.</param>
-        /// <param name="expectedVertexCount">Render vertices the body's blob binds (<see cref="SoftBodyShapeBlob.VertexCount"/>).</param>
+        /// <param name="expectedVertexCount">Render vertices the body's blob binds (<see cref="ShapeMatchingShapeBlob.VertexCount"/>).</param>
         /// <param name="error">Why no copy was made, for the log; null on success.</param>
         public static Mesh CreateDeformableCopy(Mesh source, int expectedVertexCount, out string error)
         {

@@ -66,12 +66,12 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct DeformJob : IJobEntity
         {
-            void Execute(in SoftBodyShape shape, in ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+            void Execute(in ShapeMatchingShape shape, in ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
                 DynamicBuffer<SoftBodyMeshVertex> vertices, ref SoftBodyMeshInstance instance, ref RenderBounds renderBounds)
             {
                 if (instance.Deformed && instance.DeformedStep == body.Status.StepCount)
                     return;
-                ref SoftBodyShapeBlob blob = ref shape.Blob.Value;
+                ref ShapeMatchingShapeBlob blob = ref shape.Blob.Value;
                 int n = blob.ParticleCount;
                 if (positions.Length != n || vertices.Length != blob.VertexCount || vertices.Length == 0)
                     return;

@@ -21,7 +21,7 @@ namespace SoftBodyDynamics
         /// <summary>Pose of the mesh origin for a body at <paramref name="status"/> (unit scale).</summary>
         /// <param name="status">Centre of mass and best-fit rotation of the body.</param>
         /// <param name="restCenter">Rest centre of mass in mesh space (m).</param>
-        public static LocalTransform ToLocalTransform(in SoftBodyStatus status, float3 restCenter) =>
+        public static LocalTransform ToLocalTransform(in ParticleBodyStatus status, float3 restCenter) =>
             LocalTransform.FromPositionRotation(status.Center - math.rotate(status.Rotation, restCenter), status.Rotation);
     }
 }

@@ -8,7 +8,7 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// Owns the per-body render meshes. A rendered soft body (<see cref="SoftBodyRenderMesh"/> with a
-    /// <see cref="SoftBodyShape"/> or a <see cref="SoftBodyEmbedding"/>, plus Entities
+    /// <see cref="ShapeMatchingShape"/> or a <see cref="SoftBodyEmbedding"/>, plus Entities
     /// Graphics' <c>MaterialMeshInfo</c> and <c>RenderBounds</c>) gets its own deformable copy of the mesh
     /// (<see cref="SoftBodyMeshInstancing"/>), registered with <c>EntitiesGraphicsSystem.RegisterMesh</c> and
     /// set as the entity's runtime mesh; <see cref="SoftBodyMeshInstance"/> and a
@@ -33,7 +33,7 @@ namespace SoftBodyDynamics
         public void OnCreate(ref SystemState state)
         {
             m_NeedInstance = SystemAPI.QueryBuilder()
-                .WithAll<SoftBodyRenderMesh, SoftBodyShape>()
+                .WithAll<SoftBodyRenderMesh, ShapeMatchingShape>()
                 .WithPresent<MaterialMeshInfo>()
                 .WithAll<RenderBounds>()
                 .WithNone<SoftBodyMeshInstance>()
@@ -107,8 +107,8 @@ namespace SoftBodyDynamics
 
         /// <summary>Render vertices a body binds: from its shape-matching blob, or its embedding (mass-spring, FEM).</summary>
         static int BoundVertexCount(EntityManager entityManager, Entity entity) =>
-            entityManager.HasComponent<SoftBodyShape>(entity)
-                ? entityManager.GetComponentData<SoftBodyShape>(entity).Blob.Value.VertexCount
+            entityManager.HasComponent<ShapeMatchingShape>(entity)
+                ? entityManager.GetComponentData<ShapeMatchingShape>(entity).Blob.Value.VertexCount
                 : entityManager.GetComponentData<SoftBodyEmbedding>(entity).Blob.Value.VertexCount;
 
         void CreateInstances(EntityManager entityManager, EntitiesGraphicsSystem graphics, EntityQuery needInstance)

@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
         World m_World;
         Mesh m_Mesh;
-        BlobAssetReference<SoftBodyShapeBlob> m_Shape;
+        BlobAssetReference<ShapeMatchingShapeBlob> m_Shape;
         int m_Warnings;
         List<string> m_Errors;
 
@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Tests.Editor
             m_Mesh.triangles = triangles;
             ShapeMatchingModelData model = ShapeMatchingModelData.Create(rest, new[] { 0.25f, 0.25f, 0.25f, 0.25f },
                 new[] { 0, 4 }, new[] { 0, 1, 2, 3 }, false);
-            m_Shape = SoftBodyShapeBlobFactory.Create(model, new[] { 0, 1, 2, 3 }, triangles, Allocator.Persistent);
+            m_Shape = ShapeMatchingShapeBlobFactory.Create(model, new[] { 0, 1, 2, 3 }, triangles, Allocator.Persistent);
 
             m_Warnings = 0;
             m_Errors = new List<string>();
@@ -70,7 +70,7 @@ namespace SoftBodyDynamics.Tests.Editor
             EntityManager manager = m_World.EntityManager;
             Entity entity = manager.CreateEntity();
             manager.AddComponentData(entity, new SoftBodyRenderMesh { Mesh = m_Mesh });
-            manager.AddComponentData(entity, new SoftBodyShape { Blob = m_Shape });
+            manager.AddComponentData(entity, new ShapeMatchingShape { Blob = m_Shape });
             manager.AddComponentData(entity, new MaterialMeshInfo());
             manager.AddComponentData(entity, new RenderBounds());
             return entity;
@@ -124,7 +124,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             SystemHandle system = m_World.CreateSystem<SoftBodyRenderMeshSystem>();
             Entity unrendered = m_World.EntityManager.CreateEntity();
-            m_World.EntityManager.AddComponentData(unrendered, new SoftBodyShape { Blob = m_Shape });
+            m_World.EntityManager.AddComponentData(unrendered, new ShapeMatchingShape { Blob = m_Shape });
 
             UpdateFrames(system);
 

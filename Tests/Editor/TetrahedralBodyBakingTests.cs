@@ -76,7 +76,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(manager.HasBuffer<SoftBodyPosition>(entity) && manager.HasBuffer<SoftBodyVelocity>(entity), Is.True);
             Assert.That(manager.IsComponentEnabled<SoftBodyUninitialized>(entity), Is.True, "placed on the first step");
             Assert.That(manager.IsComponentEnabled<SoftBodyImpulse>(entity), Is.False);
-            Assert.That(manager.HasComponent<FemShape>(entity) || manager.HasComponent<SoftBodyShape>(entity), Is.False, "no other method's shape");
+            Assert.That(manager.HasComponent<FemShape>(entity) || manager.HasComponent<ShapeMatchingShape>(entity), Is.False, "no other method's shape");
 
             ref MassSpringShapeBlob shape = ref manager.GetComponentData<MassSpringShape>(entity).Blob.Value;
             Assert.That(shape.ParticleCount, Is.EqualTo(build.Tetrahedral.NodeCount));
@@ -102,7 +102,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(manager.HasComponent<FemDiagnostics>(entity), Is.True);
             Assert.That(manager.HasBuffer<FemElementRotation>(entity), Is.True);
             Assert.That(manager.HasComponent<SoftBodyEmbedding>(entity), Is.True);
-            Assert.That(manager.HasComponent<MassSpringShape>(entity) || manager.HasComponent<SoftBodyShape>(entity), Is.False, "no other method's shape");
+            Assert.That(manager.HasComponent<MassSpringShape>(entity) || manager.HasComponent<ShapeMatchingShape>(entity), Is.False, "no other method's shape");
 
             ref FemShapeBlob shape = ref manager.GetComponentData<FemShape>(entity).Blob.Value;
             Assert.That(shape.ParticleCount, Is.EqualTo(build.Tetrahedral.NodeCount));

@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Tests.Editor
             m_World = new World("Tetrahedral system tests");
             m_Manager = m_World.EntityManager;
             m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
-            m_ShapeMatching = m_World.CreateSystem<SoftBodySimulationSystem>();
+            m_ShapeMatching = m_World.CreateSystem<ShapeMatchingSimulationSystem>();
             m_MassSpring = m_World.CreateSystem<MassSpringSimulationSystem>();
             m_Fem = m_World.CreateSystem<FemSimulationSystem>();
             m_ElapsedTime = 0.0;
@@ -116,7 +116,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(ShouldRun(m_MassSpring) || ShouldRun(m_Fem) || ShouldRun(m_ShapeMatching), Is.False, "an empty world runs none");
 
             Entity shapeMatchingOnly = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(shapeMatchingOnly, new SoftBodyShape());
+            m_Manager.AddComponentData(shapeMatchingOnly, new ShapeMatchingShape());
             Assert.That(ShouldRun(m_ShapeMatching), Is.True);
             Assert.That(ShouldRun(m_MassSpring) || ShouldRun(m_Fem), Is.False, "shape-matching bodies run no spring or FEM system");
             m_Manager.DestroyEntity(shapeMatchingOnly);

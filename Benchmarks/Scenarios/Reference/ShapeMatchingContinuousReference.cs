@@ -136,7 +136,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>ω = 2πf (rad/s) of the model.</summary>
         public double AngularFrequency => m_Omega;
 
-        /// <summary>Starts from the solver's state: positions relative to <paramref name="origin"/> (the body's <see cref="SoftBodyStatus.Origin"/>), velocities.</summary>
+        /// <summary>Starts from the solver's state: positions relative to <paramref name="origin"/> (the body's <see cref="ParticleBodyStatus.Origin"/>), velocities.</summary>
         public void SetState(ReadOnlySpan<float3> positions, ReadOnlySpan<float3> velocities, float3 origin)
         {
             var o = (Vector3d)origin;

@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public readonly float3[] Velocities;
         public readonly ClusterState[] Clusters;
         public readonly float3x3[] QuadraticInverse;
-        public SoftBodyStatus Status;
+        public ParticleBodyStatus Status;
         readonly float3[] m_Predicted, m_Goals, m_Normals;
 
         /// <param name="perInstanceQuadratic">Allocate the per-instance quadratic inverses plastic flow needs in quadratic mode.</param>

@@ -5,7 +5,7 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// The arrays every particle body has, whatever holds it together: rest shape and masses (immutable, shared),
-    /// positions and velocities (runtime state, relative to <see cref="SoftBodyStatus.Origin"/>) and the per-substep
+    /// positions and velocities (runtime state, relative to <see cref="ParticleBodyStatus.Origin"/>) and the per-substep
     /// scratch of the shared step. Views only; the memory belongs to the caller.
     /// </summary>
     public readonly ref struct ParticleBody

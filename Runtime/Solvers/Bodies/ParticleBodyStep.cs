@@ -33,7 +33,7 @@ namespace SoftBodyDynamics.Solvers
         public const float PositionLimit = 1e6f;
 
         /// <summary>
-        /// Distance (m, per axis) the body's centre may move from <see cref="SoftBodyStatus.Origin"/> before the origin
+        /// Distance (m, per axis) the body's centre may move from <see cref="ParticleBodyStatus.Origin"/> before the origin
         /// moves to it. Within it float32 positions resolve 4 µm; bodies that stay within it of the world origin keep
         /// the origin at zero, so their positions are world positions.
         /// </summary>
@@ -42,7 +42,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Advances the body by one step. See the class comment.</summary>
         /// <param name="colliders">Static colliders in world space.</param>
         public static ParticleStepReport Step<TStage>(ref TStage stage, in ParticleBody body, in ParticleStepConstants constants,
-            ReadOnlySpan<ColliderShape> colliders, ref SoftBodyStatus status) where TStage : struct, IParticleSolveStage
+            ReadOnlySpan<ColliderShape> colliders, ref ParticleBodyStatus status) where TStage : struct, IParticleSolveStage
         {
             var report = new ParticleStepReport { BadParticle = -1 };
             if (!(constants.Dt > 0f) || !math.isfinite(constants.Dt) || body.ParticleCount == 0 || constants.Substeps < 1)
@@ -136,7 +136,7 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
-        public static void Wake(ref SoftBodyStatus status)
+        public static void Wake(ref ParticleBodyStatus status)
         {
             status.Asleep = false;
             status.StillTime = 0f;
@@ -150,9 +150,9 @@ namespace SoftBodyDynamics.Solvers
         /// Places the rest shape with its centre of mass at <paramref name="position"/> (world), rotated and moving
         /// uniformly, and starts the status there (origin, centre, rotation).
         /// </summary>
-        public static void Place(in ParticleBody body, float3 position, quaternion rotation, float3 velocity, out SoftBodyStatus status)
+        public static void Place(in ParticleBody body, float3 position, quaternion rotation, float3 velocity, out ParticleBodyStatus status)
         {
-            status = new SoftBodyStatus { Center = position, Rotation = math.normalizesafe(rotation) };
+            status = new ParticleBodyStatus { Center = position, Rotation = math.normalizesafe(rotation) };
             status.Origin = OriginFor(position);
             status.LocalCenter = position - status.Origin;
             PlaceParticles(body, status.LocalCenter, status.Rotation, velocity);
@@ -171,7 +171,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>The guard's answer: rest shape at the last good centre and rotation, at rest, reported; the stage resets what it must.</summary>
         static void ResetToLastGoodPlacement<TStage>(ref TStage stage, in ParticleBody body, int badParticle,
-            ref SoftBodyStatus status, ref ParticleStepReport report) where TStage : struct, IParticleSolveStage
+            ref ParticleBodyStatus status, ref ParticleStepReport report) where TStage : struct, IParticleSolveStage
         {
             report.Reset = true;
             report.BadParticle = badParticle;
@@ -197,7 +197,7 @@ namespace SoftBodyDynamics.Solvers
         /// moves the origin (and the positions with it, by whole metres: exact in float32) once the centre is more than
         /// <see cref="RebaseDistance"/> from it.
         /// </summary>
-        static void UpdatePlacement(in ParticleBody body, ref SoftBodyStatus status)
+        static void UpdatePlacement(in ParticleBody body, ref ParticleBodyStatus status)
         {
             var x = body.Positions;
             float3 center = ShapeMatching.CenterOfMass(x, body.Masses);
@@ -243,7 +243,7 @@ namespace SoftBodyDynamics.Solvers
         }
 
         static bool ShouldWake(in ParticleBody body, in ParticleStepConstants constants, in ContactProjection.Settings contact,
-            ReadOnlySpan<ColliderShape> colliders, in SoftBodyStatus status)
+            ReadOnlySpan<ColliderShape> colliders, in ParticleBodyStatus status)
         {
             if (math.any(constants.Gravity != status.LastAcceleration))
                 return true;

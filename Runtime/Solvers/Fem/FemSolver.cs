@@ -15,7 +15,7 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/> (world), rotated and moving uniformly; element rotations at the body's.</summary>
         public static void Initialize(in FemModel model, in FemState state, float3 position, quaternion rotation, float3 velocity,
-            out SoftBodyStatus status)
+            out ParticleBodyStatus status)
         {
             ParticleBodyStep.Place(Body(model, state), position, rotation, velocity, out status);
             state.Rotations.Fill(status.Rotation);
@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
-        public static void Wake(ref SoftBodyStatus status) => ParticleBodyStep.Wake(ref status);
+        public static void Wake(ref ParticleBodyStatus status) => ParticleBodyStep.Wake(ref status);
 
         /// <summary>
         /// The integrator that runs for <paramref name="p"/>: XPBD needs the Neo-Hookean model; the co-rotational model with
@@ -77,7 +77,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment.</summary>
         /// <param name="colliders">Static colliders in world space.</param>
         public static unsafe FemStepReport Step(in FemModel model, in FemParameters parameters, ReadOnlySpan<ColliderShape> colliders,
-            float dt, in FemState state, ref SoftBodyStatus status)
+            float dt, in FemState state, ref ParticleBodyStatus status)
         {
             FemParameters p = parameters.Sanitized();
             FemIntegrator integrator = EffectiveIntegrator(model, p, out bool fallback);

@@ -12,7 +12,7 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public readonly ref struct FemState
     {
-        /// <summary>Node positions xᵢ (m, relative to <see cref="SoftBodyStatus.Origin"/>).</summary>
+        /// <summary>Node positions xᵢ (m, relative to <see cref="ParticleBodyStatus.Origin"/>).</summary>
         public readonly Span<float3> Positions;
         /// <summary>Node velocities vᵢ (m/s).</summary>
         public readonly Span<float3> Velocities;

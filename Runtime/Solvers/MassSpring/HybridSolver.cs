@@ -18,7 +18,7 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="springState">Only its scratch is used (<see cref="MassSpringState.Scratch"/>, <see cref="MassSpringState.SpringScratch"/>).</param>
         public static unsafe ParticleStepReport Step(in ShapeMatchingModel shapeModel, in ShapeMatchingParameters shapeParameters,
             in ShapeMatchingState shapeState, in MassSpringModel springModel, in MassSpringParameters springParameters,
-            in MassSpringState springState, ReadOnlySpan<ColliderShape> colliders, float dt, ref SoftBodyStatus status)
+            in MassSpringState springState, ReadOnlySpan<ColliderShape> colliders, float dt, ref ParticleBodyStatus status)
         {
             if (!(dt > 0f) || !math.isfinite(dt) || shapeModel.ParticleCount == 0 || springModel.ParticleCount != shapeModel.ParticleCount)
                 return new ParticleStepReport { BadParticle = -1 };

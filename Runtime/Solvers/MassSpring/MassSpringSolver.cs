@@ -14,11 +14,11 @@ namespace SoftBodyDynamics.Solvers
     {
         /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/> (world), rotated and moving uniformly.</summary>
         public static void Initialize(in MassSpringModel model, in MassSpringState state, float3 position, quaternion rotation,
-            float3 velocity, out SoftBodyStatus status) =>
+            float3 velocity, out ParticleBodyStatus status) =>
             ParticleBodyStep.Place(Body(model, state), position, rotation, velocity, out status);
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
-        public static void Wake(ref SoftBodyStatus status) => ParticleBodyStep.Wake(ref status);
+        public static void Wake(ref ParticleBodyStatus status) => ParticleBodyStep.Wake(ref status);
 
         /// <summary>The per-step constants for (sanitized) parameters <paramref name="p"/> and step <paramref name="dt"/>: no pull, retention 1.</summary>
         public static ParticleStepConstants Constants(in MassSpringParameters p, float dt)
@@ -31,16 +31,16 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Advances the body by <paramref name="dt"/> seconds (see the class comment).</summary>
         /// <param name="colliders">Static colliders in world space.</param>
         public static ParticleStepReport Step(in MassSpringModel model, in MassSpringParameters parameters,
-            ReadOnlySpan<ColliderShape> colliders, float dt, in MassSpringState state, ref SoftBodyStatus status) =>
+            ReadOnlySpan<ColliderShape> colliders, float dt, in MassSpringState state, ref ParticleBodyStatus status) =>
             Step(model, parameters, colliders, dt, state, ref status, 0);
 
         /// <summary>
-        /// As <see cref="Step(in MassSpringModel, in MassSpringParameters, ReadOnlySpan{ColliderShape}, float, in MassSpringState, ref SoftBodyStatus)"/>,
+        /// As <see cref="Step(in MassSpringModel, in MassSpringParameters, ReadOnlySpan{ColliderShape}, float, in MassSpringState, ref ParticleBodyStatus)"/>,
         /// with the per-spring and per-particle passes run in batches of <paramref name="batch"/> (0 = one batch): the
         /// split a job system would make. The result has the same bits for every batch size.
         /// </summary>
         public static unsafe ParticleStepReport Step(in MassSpringModel model, in MassSpringParameters parameters,
-            ReadOnlySpan<ColliderShape> colliders, float dt, in MassSpringState state, ref SoftBodyStatus status, int batch)
+            ReadOnlySpan<ColliderShape> colliders, float dt, in MassSpringState state, ref ParticleBodyStatus status, int batch)
         {
             if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
                 return new ParticleStepReport { BadParticle = -1 };

@@ -9,7 +9,7 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public readonly ref struct MassSpringState
     {
-        /// <summary>Particle positions xᵢ (m, relative to <see cref="SoftBodyStatus.Origin"/>).</summary>
+        /// <summary>Particle positions xᵢ (m, relative to <see cref="ParticleBodyStatus.Origin"/>).</summary>
         public readonly Span<float3> Positions;
         /// <summary>Particle velocities vᵢ (m/s).</summary>
         public readonly Span<float3> Velocities;

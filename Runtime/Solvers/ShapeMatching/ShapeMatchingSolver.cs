@@ -28,14 +28,14 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>Places the rest shape with its centre of mass at <paramref name="position"/> (world), rotated and moving uniformly; clusters at rest.</summary>
         public static void Initialize(in ShapeMatchingModel model, in ShapeMatchingState state, float3 position,
-            quaternion rotation, float3 velocity, out SoftBodyStatus status)
+            quaternion rotation, float3 velocity, out ParticleBodyStatus status)
         {
             ParticleBodyStep.Place(Body(model, state), position, rotation, velocity, out status);
             ResetClusters(model, state, status.Rotation);
         }
 
         /// <summary>Wakes a sleeping body (call after writing velocities or applying an impulse).</summary>
-        public static void Wake(ref SoftBodyStatus status) => ParticleBodyStep.Wake(ref status);
+        public static void Wake(ref ParticleBodyStatus status) => ParticleBodyStep.Wake(ref status);
 
         /// <summary>
         /// Substeps a step of <paramref name="dt"/> takes with <paramref name="parameters"/>: at least
@@ -62,7 +62,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Advances the body by <paramref name="dt"/> seconds. See the class comment for the algorithm.</summary>
         /// <param name="colliders">Static colliders in world space.</param>
         public static unsafe ShapeMatchingStepReport Step(in ShapeMatchingModel model, in ShapeMatchingParameters parameters,
-            ReadOnlySpan<ColliderShape> colliders, float dt, in ShapeMatchingState state, ref SoftBodyStatus status)
+            ReadOnlySpan<ColliderShape> colliders, float dt, in ShapeMatchingState state, ref ParticleBodyStatus status)
         {
             if (!(dt > 0f) || !math.isfinite(dt) || model.ParticleCount == 0)
                 return new ShapeMatchingStepReport { BadParticle = -1 };
@@ -96,7 +96,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Rest shape placed with its centre of mass at <paramref name="center"/> (relative to the body's
-        /// <see cref="SoftBodyStatus.Origin"/>) and rotation, uniform velocity; clusters back to rest (Sₚ = I,
+        /// <see cref="ParticleBodyStatus.Origin"/>) and rotation, uniform velocity; clusters back to rest (Sₚ = I,
         /// rotation = <paramref name="rotation"/>, the model's rest data and quadratic inverses).
         /// </summary>
         public static void PlaceRestShape(in ShapeMatchingModel model, in ShapeMatchingState state, float3 center,

@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             public readonly float[] Masses = new float[8];
             public readonly float3[] X = new float3[8], V = new float3[8], Predicted = new float3[8], Scratch = new float3[8], Normals = new float3[8];
             public float3 RestCenter;
-            public SoftBodyStatus Status;
+            public ParticleBodyStatus Status;
             public CountingStage Stage;
 
             public Body(float[] masses = null)

@@ -64,7 +64,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var velocities = new float3[n];
             var state = new MassSpringState(positions, velocities, new float3[MassSpringState.ScratchPerParticle * n],
                 new float3[MassSpringState.ScratchPerSpring * model.SpringCount]);
-            MassSpringSolver.Initialize(model.AsModel(), state, float3.zero, quaternion.identity, float3.zero, out SoftBodyStatus status);
+            MassSpringSolver.Initialize(model.AsModel(), state, float3.zero, quaternion.identity, float3.zero, out ParticleBodyStatus status);
             Assert.That(MassSpringSolver.Step(model.AsModel(), p, ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, state, ref status, 64).ParametersReplaced,
                 Is.False, "valid parameters");
             p.Body.Substeps = 0;

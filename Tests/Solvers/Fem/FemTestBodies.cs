@@ -33,7 +33,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public FemParameters Parameters;
         public readonly float3[] Positions, Velocities, ParticleScratch, ElementScratch, WarmStart;
         public readonly quaternion[] Rotations;
-        public SoftBodyStatus Status;
+        public ParticleBodyStatus Status;
 
         /// <param name="warmStart">Keep the last implicit substep's Δv as the next solve's first guess (<see cref="FemState.WarmStart"/>).</param>
         public FemTestBody(FemModelData data, FemParameters parameters, float3 position = default, bool warmStart = true)

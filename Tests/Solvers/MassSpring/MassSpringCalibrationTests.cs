@@ -105,7 +105,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             var springScratch = new float3[MassSpringState.ScratchPerSpring * springs.SpringCount];
             var smState = ShapeMatchingState.FromScratch(x, v, clusters, Span<float3x3>.Empty, smScratch);
             var msState = MassSpringState.FromScratch(x, v, msScratch, springScratch);
-            ShapeMatchingSolver.Initialize(shape.AsModel(), smState, new float3(0f, 1f, 0f), quaternion.identity, float3.zero, out SoftBodyStatus status);
+            ShapeMatchingSolver.Initialize(shape.AsModel(), smState, new float3(0f, 1f, 0f), quaternion.identity, float3.zero, out ParticleBodyStatus status);
             // Stretch 20 % along x about the centre.
             for (int i = 0; i < n; i++)
                 x[i].x = 1.2f * x[i].x;
@@ -124,7 +124,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         /// <summary>Largest distance of a particle from the rest shape placed at the body's centre and rotation (m).</summary>
-        static double Deformation(float3[] x, MassSpringModelData model, in SoftBodyStatus status)
+        static double Deformation(float3[] x, MassSpringModelData model, in ParticleBodyStatus status)
         {
             float3 center = float3.zero;
             float mass = 0f;

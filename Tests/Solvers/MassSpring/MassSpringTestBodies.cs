@@ -9,7 +9,7 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         public MassSpringModelData Data;
         public float3[] Positions, Velocities, Scratch, SpringScratch;
-        public SoftBodyStatus Status;
+        public ParticleBodyStatus Status;
 
         public MassSpringTestBody(MassSpringModelData data)
         {
@@ -19,7 +19,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             Velocities = new float3[n];
             Scratch = new float3[MassSpringState.ScratchPerParticle * n];
             SpringScratch = new float3[MassSpringState.ScratchPerSpring * data.SpringCount];
-            Status = new SoftBodyStatus { Rotation = quaternion.identity };
+            Status = new ParticleBodyStatus { Rotation = quaternion.identity };
         }
 
         public MassSpringState State => MassSpringState.FromScratch(Positions, Velocities, Scratch, SpringScratch);

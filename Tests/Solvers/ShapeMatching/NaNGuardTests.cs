@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 neighbour.Step(1f / 60f, floor);
                 twin.Step(1f / 60f, floor);
             }
-            SoftBodyStatus lastGood = victim.Status;
+            ParticleBodyStatus lastGood = victim.Status;
             const int index = 17;
             switch (injection)
             {

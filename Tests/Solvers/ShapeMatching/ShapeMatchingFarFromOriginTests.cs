@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Tests.Solvers
 {
     /// <summary>
     /// A body far from the world origin behaves like one at the origin. Its particles are simulated relative to
-    /// <see cref="SoftBodyStatus.Origin"/>, whole metres near the body, and colliders are seen from there; a whole
+    /// <see cref="ParticleBodyStatus.Origin"/>, whole metres near the body, and colliders are seen from there; a whole
     /// metre is exact in float32, so a body placed d metres away on a floor translated by exactly d metres computes
     /// with the very same numbers as its twin at the origin.
     /// </summary>

@@ -109,7 +109,7 @@ namespace SoftBodyDynamics.Tools.MeshWriteBackTiming
                 var particles = new float3[n];
                 var state = new ShapeMatchingState(particles, velocities, clusters, default, default, default, default);
                 ShapeMatchingSolver.Initialize(model.AsModel(), state, MeshWriteBackBody.Position(b), rng.NextQuaternionRotation(),
-                    float3.zero, out SoftBodyStatus status);
+                    float3.zero, out ParticleBodyStatus status);
                 for (int i = 0; i < n; i++)
                     particles[i] += rng.NextFloat3(new float3(-k_Jitter), new float3(k_Jitter));
                 bodies[b] = new Body

@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly FemParameters m_Parameters;
         readonly quaternion[] m_Rotations;
         readonly float3[] m_ParticleScratch, m_ElementScratch, m_WarmStart;
-        SoftBodyStatus m_Status;
+        ParticleBodyStatus m_Status;
         long m_CgIterations, m_Substeps;
         float m_CgResidual;
 

@@ -18,7 +18,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly MassSpringParameters m_SpringParameters;
         readonly ClusterState[] m_Clusters;
         readonly float3[] m_Predicted, m_Goals, m_Normals, m_Scratch, m_SpringScratch;
-        SoftBodyStatus m_Status;
+        ParticleBodyStatus m_Status;
 
         public string Family => "Hybrid SM + MS XPBD";
         public string Knob => $"{m_ShapeParameters.Body.Substeps} substeps";

@@ -14,7 +14,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly MassSpringModelData m_Model;
         readonly MassSpringParameters m_Parameters;
         readonly float3[] m_Scratch, m_SpringScratch;
-        SoftBodyStatus m_Status;
+        ParticleBodyStatus m_Status;
 
         public string Family { get; }
         public string Knob => $"{m_Parameters.Body.Substeps} substeps";

@@ -19,7 +19,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly ShapeMatchingParameters m_Parameters;
         readonly ClusterState[] m_Clusters;
         readonly float3[] m_Predicted, m_Goals, m_Normals;
-        SoftBodyStatus m_Status;
+        ParticleBodyStatus m_Status;
 
         public string Family { get; }
         public string Knob => $"{m_Parameters.Body.Substeps} substeps";

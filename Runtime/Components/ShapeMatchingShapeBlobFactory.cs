@@ -6,8 +6,8 @@ using Unity.Mathematics;
 
 namespace SoftBodyDynamics
 {
-    /// <summary>Builds <see cref="SoftBodyShapeBlob"/> assets from a shape-matching model (bake time, managed).</summary>
-    public static class SoftBodyShapeBlobFactory
+    /// <summary>Builds <see cref="ShapeMatchingShapeBlob"/> assets from a shape-matching model (bake time, managed).</summary>
+    public static class ShapeMatchingShapeBlobFactory
     {
         /// <summary>
         /// Copies <paramref name="model"/> and the render binding into a new blob asset. The caller owns
@@ -18,7 +18,7 @@ namespace SoftBodyDynamics
         /// <param name="triangles">Render triangle list (render-vertex indices, a multiple of 3); null or empty when unbound.</param>
         /// <param name="allocator">Allocator of the blob (<see cref="Allocator.Persistent"/> for baking).</param>
         /// <exception cref="ArgumentException">A binding index is out of range, or the triangle list is not a multiple of 3.</exception>
-        public static BlobAssetReference<SoftBodyShapeBlob> Create(ShapeMatchingModelData model, int[] vertexToParticle,
+        public static BlobAssetReference<ShapeMatchingShapeBlob> Create(ShapeMatchingModelData model, int[] vertexToParticle,
             int[] triangles, Allocator allocator)
         {
             if (model == null)
@@ -31,7 +31,7 @@ namespace SoftBodyDynamics
             var builder = new BlobBuilder(Allocator.Temp);
             try
             {
-                ref SoftBodyShapeBlob root = ref builder.ConstructRoot<SoftBodyShapeBlob>();
+                ref ShapeMatchingShapeBlob root = ref builder.ConstructRoot<ShapeMatchingShapeBlob>();
                 builder.Construct(ref root.RestPositions, model.RestPositions);
                 builder.Construct(ref root.Masses, model.Masses);
                 builder.Construct(ref root.InverseClusterCounts, model.InverseClusterCounts);
@@ -43,7 +43,7 @@ namespace SoftBodyDynamics
                 root.BodyRest = model.BodyRest;
                 builder.Construct(ref root.VertexToParticle, vertexToParticle);
                 builder.Construct(ref root.Triangles, triangles);
-                return builder.CreateBlobAssetReference<SoftBodyShapeBlob>(allocator);
+                return builder.CreateBlobAssetReference<ShapeMatchingShapeBlob>(allocator);
             }
             finally
             {

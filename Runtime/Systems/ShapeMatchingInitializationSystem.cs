@@ -14,9 +14,9 @@ namespace SoftBodyDynamics
     /// tag. Runs first in the fixed step, so prefabs instantiated at any time start where they were placed.
     /// </summary>
     [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
-    [UpdateBefore(typeof(SoftBodySimulationSystem))]
+    [UpdateBefore(typeof(ShapeMatchingSimulationSystem))]
     [BurstCompile]
-    public partial struct SoftBodyInitializationSystem : ISystem
+    public partial struct ShapeMatchingInitializationSystem : ISystem
     {
         [BurstCompile]
         public void OnCreate(ref SystemState state)
@@ -27,27 +27,27 @@ namespace SoftBodyDynamics
         [BurstCompile]
         public void OnUpdate(ref SystemState state)
         {
-            new InitializeJob { QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>() }.ScheduleParallel();
+            new InitializeJob { QuadraticInverse = SystemAPI.GetBufferLookup<ShapeMatchingQuadraticInverse>() }.ScheduleParallel();
         }
 
         [BurstCompile]
         partial struct InitializeJob : IJobEntity
         {
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
-            [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
+            [NativeDisableParallelForRestriction] public BufferLookup<ShapeMatchingQuadraticInverse> QuadraticInverse;
 
-            void Execute(Entity entity, in SoftBodyShape shape, ref LocalTransform transform, ref ParticleBodyState body,
+            void Execute(Entity entity, in ShapeMatchingShape shape, ref LocalTransform transform, ref ParticleBodyState body,
                 ref ShapeMatchingDiagnostics diagnostics,
                 DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
-                DynamicBuffer<SoftBodyCluster> clusters, EnabledRefRW<SoftBodyUninitialized> uninitialized)
+                DynamicBuffer<ShapeMatchingCluster> clusters, EnabledRefRW<SoftBodyUninitialized> uninitialized)
             {
-                ref SoftBodyShapeBlob blob = ref shape.Blob.Value;
+                ref ShapeMatchingShapeBlob blob = ref shape.Blob.Value;
                 int n = blob.ParticleCount;
                 positions.ResizeUninitialized(n);
                 velocities.ResizeUninitialized(n);
                 clusters.ResizeUninitialized(blob.ClusterCount);
                 var quadratic = default(System.Span<float3x3>);
-                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<SoftBodyQuadraticInverse> perInstance))
+                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<ShapeMatchingQuadraticInverse> perInstance))
                 {
                     perInstance.ResizeUninitialized(blob.QuadraticInverse.Length);
                     quadratic = SoftBodyBuffers.AsSpan(perInstance);

@@ -14,7 +14,7 @@ namespace SoftBodyDynamics.Tests.Editor
     /// landing on a collider, the NaN guard, impulses, independence of bodies, and running only when a
     /// soft body exists. Each update steps both systems once with a fixed dt and completes the jobs.
     /// </summary>
-    public class SoftBodySystemTests
+    public class ShapeMatchingSystemTests
     {
         const float k_Dt = 1f / 60f;
         const float k_Spacing = 0.1f;
@@ -24,7 +24,7 @@ namespace SoftBodyDynamics.Tests.Editor
         SystemHandle m_Initialization;
         SystemHandle m_Simulation;
         SystemHandle m_ColliderWorld;
-        BlobAssetReference<SoftBodyShapeBlob> m_Shape;
+        BlobAssetReference<ShapeMatchingShapeBlob> m_Shape;
         ShapeMatchingModelData m_Model;
         double m_ElapsedTime;
 
@@ -65,10 +65,10 @@ namespace SoftBodyDynamics.Tests.Editor
             m_World = new World("Soft body system tests");
             m_Manager = m_World.EntityManager;
             m_ColliderWorld = m_World.CreateSystem<ColliderWorldSystem>();
-            m_Initialization = m_World.CreateSystem<SoftBodyInitializationSystem>();
-            m_Simulation = m_World.CreateSystem<SoftBodySimulationSystem>();
+            m_Initialization = m_World.CreateSystem<ShapeMatchingInitializationSystem>();
+            m_Simulation = m_World.CreateSystem<ShapeMatchingSimulationSystem>();
             m_Model = CubeLattice();
-            m_Shape = SoftBodyShapeBlobFactory.Create(m_Model, null, null, Allocator.Persistent);
+            m_Shape = ShapeMatchingShapeBlobFactory.Create(m_Model, null, null, Allocator.Persistent);
             m_ElapsedTime = 0.0;
         }
 
@@ -120,7 +120,7 @@ namespace SoftBodyDynamics.Tests.Editor
                 Assert.That(math.all(math.isfinite(positions[i])), Is.True, $"particle {i} is finite: {positions[i]}");
         }
 
-        SoftBodyStatus Status(Entity entity) => m_Manager.GetComponentData<ParticleBodyState>(entity).Status;
+        ParticleBodyStatus Status(Entity entity) => m_Manager.GetComponentData<ParticleBodyState>(entity).Status;
 
         [Test]
         public void SimulationSystem_RunsOnlyWhenASoftBodyExists()
@@ -148,7 +148,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.That(m_Manager.IsComponentEnabled<SoftBodyUninitialized>(body), Is.False, "initialised once");
             float3[] x = Positions(body);
             Assert.That(x.Length, Is.EqualTo(m_Model.ParticleCount));
-            Assert.That(m_Manager.GetBuffer<SoftBodyCluster>(body, true).Length, Is.EqualTo(m_Model.ClusterCount));
+            Assert.That(m_Manager.GetBuffer<ShapeMatchingCluster>(body, true).Length, Is.EqualTo(m_Model.ClusterCount));
             for (int i = 0; i < x.Length; i++)
             {
                 float3 expected = position + math.rotate(rotation, m_Model.RestPositions[i]);
@@ -182,7 +182,7 @@ namespace SoftBodyDynamics.Tests.Editor
             int n = 30 * substeps;
             double h = (double)k_Dt / substeps;
             float expectedY = (float)(startY + parameters.Body.Acceleration.y * h * h * n * (n + 1) / 2.0);
-            SoftBodyStatus status = Status(body);
+            ParticleBodyStatus status = Status(body);
             Assert.That(status.Center.y, Is.EqualTo(expectedY).Within(1e-4f), "free fall of the centre of mass");
             Assert.That(status.ResetCount, Is.EqualTo(0));
             Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Stepped, Is.True);
@@ -210,7 +210,7 @@ namespace SoftBodyDynamics.Tests.Editor
             // Sideways "gravity" of 1 m/s² over 10 steps of 3 substeps: x moves by a·h²·N(N+1)/2 (see the free-fall test), y not at all.
             int n = 30;
             double h = (double)k_Dt / 3;
-            SoftBodyStatus status = Status(body);
+            ParticleBodyStatus status = Status(body);
             Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Substeps, Is.EqualTo(3), "the world's minimum substeps");
             Assert.That(status.Center.x, Is.EqualTo((float)(start.x + h * h * n * (n + 1) / 2.0)).Within(1e-5f), "the world's gravity");
             Assert.That(status.Center.y, Is.EqualTo(start.y).Within(1e-5f), "the body's own gravity is replaced");
@@ -240,7 +240,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             Entity body = CreateBody(new float3(0f, 2f, 0f));
             Update(2);
-            SoftBodyStatus before = Status(body);
+            ParticleBodyStatus before = Status(body);
 
             DynamicBuffer<SoftBodyPosition> positions = m_Manager.GetBuffer<SoftBodyPosition>(body);
             positions[0] = new SoftBodyPosition { Value = new float3(float.NaN, 0f, 0f) };
@@ -272,7 +272,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Update();
 
             Assert.That(m_Manager.IsComponentEnabled<SoftBodyImpulse>(body), Is.False, "the impulse is applied once");
-            SoftBodyStatus after = Status(body);
+            ParticleBodyStatus after = Status(body);
             Assert.That(after.Asleep, Is.False, "the impulse woke the body");
             Assert.That(after.Center.x - before.x, Is.EqualTo(k_Dt).Within(1e-4f), "1 m/s for one step");
         }

@@ -3,7 +3,7 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>Per-body bookkeeping of the step: placement, sleep and the NaN guard (a component in ECS).</summary>
-    public struct SoftBodyStatus
+    public struct ParticleBodyStatus
     {
         /// <summary>Centre of mass at the end of the last good step (m, world).</summary>
         public float3 Center;

@@ -9,7 +9,7 @@ namespace SoftBodyDynamics
     /// shared blob. See <see cref="SoftBodyArchetype.NeedsQuadraticInverse"/>.
     /// </summary>
     [InternalBufferCapacity(0)]
-    public struct SoftBodyQuadraticInverse : IBufferElementData
+    public struct ShapeMatchingQuadraticInverse : IBufferElementData
     {
         /// <summary>One 3×3 block of the scaled 9×9 inverse.</summary>
         public float3x3 Value;

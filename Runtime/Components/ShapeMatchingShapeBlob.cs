@@ -8,14 +8,14 @@ namespace SoftBodyDynamics
     /// <summary>
     /// Immutable, shareable data of a soft body (blob asset): the shape-matching model (rest shape,
     /// masses, overlapping clusters and their precomputed rest matrices) and the binding of the render
-    /// mesh to the particles. Built at bake time by <see cref="SoftBodyShapeBlobFactory"/>; every
+    /// mesh to the particles. Built at bake time by <see cref="ShapeMatchingShapeBlobFactory"/>; every
     /// instance of a prefab shares one blob.
     /// <para>
     /// Always access it in place (<c>ref var shape = ref blob.Value;</c>): blob arrays are relative
     /// pointers and are only valid inside blob storage.
     /// </para>
     /// </summary>
-    public struct SoftBodyShapeBlob
+    public struct ShapeMatchingShapeBlob
     {
         /// <summary>Rest positions x⁰ᵢ in mesh space (m), one per particle.</summary>
         public BlobArray<float3> RestPositions;

@@ -8,7 +8,7 @@ namespace SoftBodyDynamics
     /// plasticity, sleep and the NaN-guard limit. Units are documented on <see cref="ShapeMatchingParameters"/>.
     /// Change it at run time like any component; the next step uses the new values.
     /// </summary>
-    public struct SoftBodySettings : IComponentData
+    public struct ShapeMatchingSettings : IComponentData
     {
         /// <summary>The shape-matching parameters of this body.</summary>
         public ShapeMatchingParameters Value;

@@ -21,12 +21,12 @@ namespace SoftBodyDynamics
     /// </summary>
     [UpdateInGroup(typeof(ParticleSimulationSystemGroup))]
     [BurstCompile]
-    public partial struct SoftBodySimulationSystem : ISystem
+    public partial struct ShapeMatchingSimulationSystem : ISystem
     {
         [BurstCompile]
         public void OnCreate(ref SystemState state)
         {
-            state.RequireForUpdate<SoftBodyShape>();
+            state.RequireForUpdate<ShapeMatchingShape>();
             state.RequireForUpdate<ColliderWorldShape>();
         }
 
@@ -44,7 +44,7 @@ namespace SoftBodyDynamics
                 DeltaTime = dt,
                 HasWorldSettings = hasWorld,
                 World = world,
-                QuadraticInverse = SystemAPI.GetBufferLookup<SoftBodyQuadraticInverse>(),
+                QuadraticInverse = SystemAPI.GetBufferLookup<ShapeMatchingQuadraticInverse>(),
             }.ScheduleParallel();
         }
 
@@ -53,7 +53,7 @@ namespace SoftBodyDynamics
         [WithNone(typeof(SoftBodyUninitialized))]
         partial struct ApplyImpulseJob : IJobEntity
         {
-            void Execute(in SoftBodyShape shape, ref ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
+            void Execute(in ShapeMatchingShape shape, ref ParticleBodyState body, in DynamicBuffer<SoftBodyPosition> positions,
                 DynamicBuffer<SoftBodyVelocity> velocities, in SoftBodyImpulse impulse, EnabledRefRW<SoftBodyImpulse> pending)
             {
                 // The shape is the filter: only this method's bodies (the mass-spring and FEM systems handle their own).
@@ -75,20 +75,20 @@ namespace SoftBodyDynamics
             /// <summary>The world's settings (when <see cref="HasWorldSettings"/>).</summary>
             public SoftBodyWorldSettings World;
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
-            [NativeDisableParallelForRestriction] public BufferLookup<SoftBodyQuadraticInverse> QuadraticInverse;
+            [NativeDisableParallelForRestriction] public BufferLookup<ShapeMatchingQuadraticInverse> QuadraticInverse;
 
-            void Execute(Entity entity, in SoftBodyShape shape, in SoftBodySettings settings, ref ParticleBodyState body,
+            void Execute(Entity entity, in ShapeMatchingShape shape, in ShapeMatchingSettings settings, ref ParticleBodyState body,
                 ref ShapeMatchingDiagnostics diagnostics,
                 ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities,
-                DynamicBuffer<SoftBodyCluster> clusters)
+                DynamicBuffer<ShapeMatchingCluster> clusters)
             {
-                ref SoftBodyShapeBlob blob = ref shape.Blob.Value;
+                ref ShapeMatchingShapeBlob blob = ref shape.Blob.Value;
                 int n = blob.ParticleCount;
                 // Buffers are sized by the initialization system; anything else is not a body this job can step.
                 if (positions.Length != n || velocities.Length != n || clusters.Length != blob.ClusterCount)
                     return;
                 var quadratic = default(System.Span<float3x3>);
-                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<SoftBodyQuadraticInverse> perInstance)
+                if (QuadraticInverse.TryGetBuffer(entity, out DynamicBuffer<ShapeMatchingQuadraticInverse> perInstance)
                     && perInstance.Length == blob.QuadraticInverse.Length)
                     quadratic = SoftBodyBuffers.AsSpan(perInstance);
 
