@@ -8,7 +8,8 @@ namespace SoftBodyDynamics
     /// Builds the step's collider world first in <see cref="ParticleSimulationSystemGroup"/>: every
     /// <see cref="SoftBodyCollider"/>, in query order, copied into the <see cref="ColliderWorldShape"/> buffer of a
     /// singleton entity it creates. Taking the buffer for writing completes the jobs of the previous step that still read
-    /// it. A world whose colliders are all gone gets an empty buffer once, then the system does nothing.
+    /// it. A world whose colliders are all gone gets an empty buffer once, then the system does nothing. It updates only
+    /// while something reads the collider world: a particle body of any method or a fluid.
     /// </summary>
     [UpdateInGroup(typeof(ParticleSimulationSystemGroup), OrderFirst = true)]
     [BurstCompile]
@@ -20,6 +21,13 @@ namespace SoftBodyDynamics
         public void OnCreate(ref SystemState state)
         {
             m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            var readers = new NativeArray<EntityQuery>(4, Allocator.Temp);
+            readers[0] = SystemAPI.QueryBuilder().WithAll<ShapeMatchingShape>().Build();
+            readers[1] = SystemAPI.QueryBuilder().WithAll<MassSpringShape>().Build();
+            readers[2] = SystemAPI.QueryBuilder().WithAll<FemShape>().Build();
+            readers[3] = SystemAPI.QueryBuilder().WithAll<FluidSettings>().Build();
+            state.RequireAnyForUpdate(readers);
+            readers.Dispose();
             Entity world = state.EntityManager.CreateEntity();
             state.EntityManager.AddBuffer<ColliderWorldShape>(world);
         }

@@ -67,8 +67,10 @@ namespace SoftBodyDynamics.Tests.Editor
         public void FluidSystem_RunsOnlyWhenAFluidExists()
         {
             Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_Simulation).ShouldRunSystem(), Is.False, "no fluid: no fluid system");
+            Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_ColliderWorld).ShouldRunSystem(), Is.False, "nor a collider world");
             CreateFluid(100);
             Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_Simulation).ShouldRunSystem(), Is.True);
+            Assert.That(m_World.Unmanaged.ResolveSystemStateRef(m_ColliderWorld).ShouldRunSystem(), Is.True, "a fluid reads the collider world");
         }
 
         [Test]

@@ -114,10 +114,14 @@ namespace SoftBodyDynamics.Tests.Editor
         public void EachSystem_RunsOnlyWhenItsOwnShapeExists()
         {
             Assert.That(ShouldRun(m_MassSpring) || ShouldRun(m_Fem) || ShouldRun(m_ShapeMatching), Is.False, "an empty world runs none");
+            Entity collider = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(collider, new SoftBodyCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
+            Assert.That(ShouldRun(m_ColliderWorld), Is.False, "colliders alone: nothing reads the collider world, so it is not built");
 
             Entity shapeMatchingOnly = m_Manager.CreateEntity();
             m_Manager.AddComponentData(shapeMatchingOnly, new ShapeMatchingShape());
             Assert.That(ShouldRun(m_ShapeMatching), Is.True);
+            Assert.That(ShouldRun(m_ColliderWorld), Is.True, "a body reads the collider world");
             Assert.That(ShouldRun(m_MassSpring) || ShouldRun(m_Fem), Is.False, "shape-matching bodies run no spring or FEM system");
             m_Manager.DestroyEntity(shapeMatchingOnly);
 

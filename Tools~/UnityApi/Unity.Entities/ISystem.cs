@@ -37,6 +37,9 @@ namespace Unity.Entities
         public void RequireForUpdate(EntityQuery query) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.RequireAnyForUpdate.html
         public void RequireAnyForUpdate(params EntityQuery[] queries) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.RequireAnyForUpdate.html
+        // (source: SystemState.cs, 1.4.2: [GenerateTestsForBurstCompatibility] public void RequireAnyForUpdate(NativeArray<EntityQuery> queries))
+        public void RequireAnyForUpdate(NativeArray<EntityQuery> queries) => throw null;
     }
 }
 
