@@ -11,18 +11,7 @@ namespace SoftBodyDynamics.Tests.Editor
         public static Entity Create(EntityManager m, in FluidSettings settings)
         {
             Entity entity = m.CreateEntity();
-            m.AddComponentData(entity, settings);
-            m.AddComponentData(entity, new FluidRuntime());
-            m.AddBuffer<FluidPosition>(entity);
-            m.AddBuffer<FluidVelocity>(entity);
-            m.AddBuffer<FluidAge>(entity);
-            m.AddBuffer<FluidLifetime>(entity);
-            m.AddBuffer<FluidAttribute>(entity);
-            m.AddBuffer<FluidId>(entity);
-            m.AddBuffer<FluidScratchInt>(entity);
-            m.AddBuffer<FluidScratchFloat>(entity);
-            m.AddBuffer<FluidScratchVector>(entity);
-            m.AddBuffer<FluidTapRuntime>(entity);
+            FluidArchetype.AddComponents(m, entity, settings);
             return entity;
         }
 

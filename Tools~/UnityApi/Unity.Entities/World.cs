@@ -23,6 +23,12 @@ namespace Unity.Entities
         public T GetOrCreateSystemManaged<T>() where T : ComponentSystemBase => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Dispose.html
         public void Dispose() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.DefaultGameObjectInjectionWorld.html
+        // (source: World.cs, 1.4.2: public static World DefaultGameObjectInjectionWorld { get; set; })
+        public static World DefaultGameObjectInjectionWorld { get => throw null; set => throw null; }
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.Time.html
+        // (source: World.cs, 1.4.2: public ref TimeData Time => ref m_Unmanaged.Time;)
+        public ref TimeData Time => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.World.IsCreated.html
         // (source: World.cs, 1.4.2: public bool IsCreated => m_Unmanaged.IsCreated;)
         public bool IsCreated => throw null;
@@ -64,6 +70,9 @@ namespace Unity.Entities
     {
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.WorldUnmanaged.ResolveSystemStateRef.html
         public ref SystemState ResolveSystemStateRef(SystemHandle id) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.WorldUnmanaged.GetExistingUnmanagedSystem.html
+        // (source: WorldUnmanaged.cs, 1.4.2: public SystemHandle GetExistingUnmanagedSystem<T>() where T : unmanaged, ISystem)
+        public SystemHandle GetExistingUnmanagedSystem<T>() where T : unmanaged, ISystem => throw null;
     }
 
     // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemHandle.html
