@@ -24,7 +24,7 @@ namespace SoftBodyDynamics.Tools.BurstCheck
         /// </summary>
         static readonly string[] s_UnityNamespaces =
         {
-            "Unity.Mathematics", "Unity.Collections", "Unity.Burst", "Unity.Entities", "Unity.Transforms", "Unity.Jobs",
+            "Unity.Mathematics", "Unity.Collections", "Unity.Burst", "Unity.Entities", "Unity.Transforms", "Unity.Jobs", "Unity.Physics",
         };
 
         /// <summary>Base-library types Burst supports (full names).</summary>

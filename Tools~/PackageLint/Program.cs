@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.PackageLint
             "Unity.Mathematics", "Unity.Mathematics.Extensions", "Unity.Burst", "Unity.Collections", "Unity.Entities",
             "Unity.Entities.Hybrid", "Unity.Entities.Graphics", "Unity.Transforms", "Unity.Scenes", "Unity.Deformations",
             "Unity.RenderPipelines.Core.Runtime", "Unity.RenderPipelines.Universal.Runtime",
-            "Unity.PerformanceTesting", "UnityEngine.TestRunner", "UnityEditor.TestRunner",
+            "Unity.PerformanceTesting", "UnityEngine.TestRunner", "UnityEditor.TestRunner", "Unity.Physics",
         };
 
         static int s_Passed, s_Failed;

@@ -45,7 +45,7 @@ namespace SoftBodyDynamics.Tools.TypeCheck
             "Unity.Entities", "Unity.Entities.Hybrid", "Unity.Transforms", "Unity.Collections", "Unity.Burst",
             "Unity.Entities.Graphics", "Unity.Deformations", "Unity.Scenes",
             "Unity.PerformanceTesting", "UnityEngine.TestRunner", "UnityEditor.TestRunner",
-            "Unity.RenderPipelines.Core.Runtime", "Unity.RenderPipelines.Universal.Runtime",
+            "Unity.RenderPipelines.Core.Runtime", "Unity.RenderPipelines.Universal.Runtime", "Unity.Physics",
         };
 
         /// <summary>Precompiled references the tool can stand in for, and the NuGet package that does.</summary>

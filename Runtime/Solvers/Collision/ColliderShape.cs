@@ -54,5 +54,34 @@ namespace SoftBodyDynamics.Solvers
 
         public static ColliderShape Capsule(float3 pointA, float3 pointB, float radius) => new ColliderShape
             { Type = ColliderShapeType.Capsule, Center = pointA, Axis = pointB, Radius = radius, Rotation = quaternion.identity };
+
+        /// <summary>
+        /// The same collider given in a body's space, seen from the world: x_world = t + R·(s·x) for the body's position
+        /// <paramref name="translation"/> (m), rotation <paramref name="rotation"/> and uniform scale <paramref name="scale"/>
+        /// (lengths and radii times s; a plane's normal only rotates).
+        /// </summary>
+        public ColliderShape Transformed(float3 translation, quaternion rotation, float scale)
+        {
+            ColliderShape c = this;
+            c.Center = translation + math.mul(rotation, scale * Center);
+            switch (Type)
+            {
+                case ColliderShapeType.Plane:
+                    c.Axis = math.mul(rotation, Axis);
+                    break;
+                case ColliderShapeType.Capsule:
+                    c.Axis = translation + math.mul(rotation, scale * Axis);
+                    c.Radius = scale * Radius;
+                    break;
+                case ColliderShapeType.Box:
+                    c.Rotation = math.normalizesafe(math.mul(rotation, Rotation));
+                    c.HalfExtents = scale * HalfExtents;
+                    break;
+                default:
+                    c.Radius = scale * Radius;
+                    break;
+            }
+            return c;
+        }
     }
 }

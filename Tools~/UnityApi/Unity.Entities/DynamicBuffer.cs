@@ -12,6 +12,9 @@ namespace Unity.Entities
         public T this[int index] { get => throw null; set => throw null; }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.ResizeUninitialized.html
         public void ResizeUninitialized(int length) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.Add.html
+        // (source: Iterators/DynamicBuffer.cs, 1.4.2: public int Add(T elem))
+        public int Add(T elem) => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.Reinterpret.html
         public DynamicBuffer<U> Reinterpret<U>() where U : unmanaged => throw null;
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.DynamicBuffer-1.AsNativeArray.html
