@@ -21,7 +21,7 @@ namespace SoftBodyDynamics.Benchmarks
     /// </summary>
     public class FluidComputePerformanceTests
     {
-        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Runtime/Compute/FluidSolver.compute";
+        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Shaders/FluidSolver.compute";
 
         [Test, Performance]
         public void Fluid_Substep_Gpu([Values(22, 46, 64)] int side)

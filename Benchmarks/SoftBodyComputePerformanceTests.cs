@@ -20,7 +20,7 @@ namespace SoftBodyDynamics.Benchmarks
     /// </summary>
     public class SoftBodyComputePerformanceTests
     {
-        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Runtime/Compute/SoftBodySolver.compute";
+        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Shaders/SoftBodySolver.compute";
 
         [Test, Performance]
         public void Xpbd_Substep_Gpu([Values(16, 32)] int cells)

@@ -117,7 +117,7 @@ namespace SoftBodyDynamics.Authoring
         [Tooltip("Where the fluid runs. CPU: Burst jobs. GPU: compute shaders (Packed storage; falls back to the CPU with a warning when the device cannot). Auto: the GPU where it can, the CPU otherwise. Default CPU.")]
         public SoftBodyDynamics.Solvers.FluidBackend backend = SoftBodyDynamics.Solvers.FluidBackend.Cpu;
 
-        [Tooltip("GPU: the fluid kernels, Runtime/Compute/FluidSolver.compute of this package.")]
+        [Tooltip("GPU: the fluid kernels, Shaders/FluidSolver.compute of this package.")]
         public ComputeShader computeShader;
 
         [Tooltip("GPU: when the particles are copied back into the fluid's entity buffers for gameplay code (asynchronously, a frame or two late). Never keeps them on the GPU.")]

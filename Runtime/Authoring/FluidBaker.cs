@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Authoring
                     "Entities storage needs a particle prefab with a Metaball Particle component; assign one or use Packed storage."));
             if (authoring.backend != FluidBackend.Cpu && authoring.computeShader == null)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidComputeShaderMissing, -1,
-                    "The fluid asks for the GPU but has no compute shader: assign Runtime/Compute/FluidSolver.compute, or it runs on the CPU."));
+                    "The fluid asks for the GPU but has no compute shader: assign Shaders/FluidSolver.compute, or it runs on the CPU."));
             if (authoring.backend != FluidBackend.Cpu && authoring.storage == FluidStorage.Entities)
                 issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidGpuNeedsPackedStorage, -1,
                     "Entities storage (one entity per particle) runs on the CPU; use Packed storage to run the fluid on the GPU."));

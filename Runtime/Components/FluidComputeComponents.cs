@@ -14,7 +14,7 @@ namespace SoftBodyDynamics
         EveryFrame,
     }
 
-    /// <summary>The fluid kernels (Runtime/Compute/FluidSolver.compute) for a fluid that may run on the GPU.</summary>
+    /// <summary>The fluid kernels (Shaders/FluidSolver.compute) for a fluid that may run on the GPU.</summary>
     public struct FluidComputeShader : IComponentData
     {
         public UnityObjectRef<ComputeShader> Shader;

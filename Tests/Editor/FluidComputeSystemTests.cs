@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Tests.Editor
     public class FluidComputeSystemTests
     {
         const float k_Dt = 1f / 60f;
-        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Runtime/Compute/FluidSolver.compute";
+        const string k_ShaderPath = "Packages/com.softbodydynamics.dots/Shaders/FluidSolver.compute";
 
         World m_World;
         EntityManager m_Manager;

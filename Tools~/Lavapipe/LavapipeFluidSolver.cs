@@ -7,7 +7,7 @@ using SoftBodyDynamics.Solvers;
 namespace SoftBodyDynamics.Lavapipe
 {
     /// <summary>
-    /// The GPU fluid step (Runtime/Compute/FluidSolver.compute, recorded by <see cref="FluidComputeStep"/>) on lavapipe:
+    /// The GPU fluid step (Shaders/FluidSolver.compute, recorded by <see cref="FluidComputeStep"/>) on lavapipe:
     /// the harness counterpart of Unity's FluidComputeSolver. Buffers are created once, grown by doubling, and bound to
     /// every kernel by name. The fastest speed is read back after the step's first dispatches to choose the substeps (the
     /// CPU path's rule); Unity reads it back asynchronously instead.
@@ -32,12 +32,12 @@ namespace SoftBodyDynamics.Lavapipe
             string dir = AppContext.BaseDirectory;
             while (dir != null)
             {
-                string candidate = Path.Combine(dir, "Runtime", "Compute", "FluidSolver.compute");
+                string candidate = Path.Combine(dir, "Shaders", "FluidSolver.compute");
                 if (File.Exists(candidate) && File.Exists(Path.Combine(dir, "package.json")))
                     return candidate;
                 dir = Path.GetDirectoryName(dir);
             }
-            throw new FileNotFoundException("Runtime/Compute/FluidSolver.compute not found above " + AppContext.BaseDirectory);
+            throw new FileNotFoundException("Shaders/FluidSolver.compute not found above " + AppContext.BaseDirectory);
         }
 
         public LavapipeFluidSolver(LavapipeDevice device, LavapipeComputeShader shader, in FluidConstants constants, int capacity)

@@ -63,7 +63,7 @@ namespace SoftBodyDynamics.Lavapipe
 
         /// <summary>Shaders/FluidSurface.compute of the package this harness runs from.</summary>
         public static string ComputePath() =>
-            Path.Combine(Path.GetDirectoryName(Path.GetDirectoryName(Path.GetDirectoryName(LavapipeFluidSolver.ComputePath()))), "Shaders", "FluidSurface.compute");
+            Path.Combine(Path.GetDirectoryName(LavapipeFluidSolver.ComputePath()), "FluidSurface.compute");
 
         public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) =>
             m_Shader.SetBuffer(m_Kernels[(int)kernel], FluidSurfaceLayout.DepthSlotNames[(int)slot], m_Buffers[(int)buffer]);

@@ -6,7 +6,7 @@ using SoftBodyDynamics.Solvers;
 namespace SoftBodyDynamics.Lavapipe
 {
     /// <summary>
-    /// The soft-body kernels (Runtime/Compute/SoftBodySolver.compute) on lavapipe, driven by <see cref="SoftBodyComputeStep"/>:
+    /// The soft-body kernels (Shaders/SoftBodySolver.compute) on lavapipe, driven by <see cref="SoftBodyComputeStep"/>:
     /// buffers created by the caller through <see cref="Create"/>, bound to every kernel by name.
     /// </summary>
     public sealed class LavapipeSoftBodyCommands : ISoftBodyComputeCommands, IDisposable

@@ -18,7 +18,7 @@
 #   rejects it), OpEntryPoint "NAME" present in spirv-dis, and
 #   spirv-val --target-env vulkan1.1 K.spv.
 # The include root holds Packages/<package name> -> package root, so Unity-style includes
-# ("Packages/com.softbodydynamics.dots/Runtime/Compute/Kernels/X.hlsl") resolve.
+# ("Packages/com.softbodydynamics.dots/Shaders/Kernels/X.hlsl") resolve.
 # CI_GLSLANG=1 is defined, so kernels can work around glslang bugs (see
 # shared/reference/gpu-testing.md: WavePrefixSum is inclusive under glslang 12).
 #

@@ -1,7 +1,7 @@
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// The kernels of <c>Runtime/Compute/FluidSolver.compute</c>, named as in HLSL (<c>#pragma kernel</c>): one per pass of
+    /// The kernels of <c>Shaders/FluidSolver.compute</c>, named as in HLSL (<c>#pragma kernel</c>): one per pass of
     /// <see cref="FluidPasses"/>, plus the pieces of the counting sort, the scan and emission.
     /// </summary>
     public enum FluidKernel : byte

@@ -3,7 +3,7 @@ using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Solvers
 {
-    /// <summary>The kernels of <c>Runtime/Compute/SoftBodySolver.compute</c>, named as in HLSL.</summary>
+    /// <summary>The kernels of <c>Shaders/SoftBodySolver.compute</c>, named as in HLSL.</summary>
     public enum SoftBodyKernel : byte { XpbdPredict, XpbdClearMultipliers, XpbdProjectColor, XpbdVelocities, ClusterSums }
 
     /// <summary>The structured buffers of the soft-body kernels; the shader property is "_" + the name.</summary>

@@ -22,7 +22,7 @@ namespace SoftBodyDynamics.Tests.Compute
         const double VisibleShare = 0.002;
 
         static string ReferenceFolder() =>
-            Path.Combine(Path.GetDirectoryName(Path.GetDirectoryName(Path.GetDirectoryName(LavapipeFluidSolver.ComputePath()))),
+            Path.Combine(Path.GetDirectoryName(Path.GetDirectoryName(LavapipeFluidSolver.ComputePath())),
                 "Tools~", "DotNet", "SoftBodyDynamics.Tests.Compute", "RenderReferences");
 
         static readonly string[] Cases =
