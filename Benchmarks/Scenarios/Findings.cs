@@ -143,6 +143,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public const string AkinciCohesion = "Akinci cohesion and curvature (fluid)";
         public const string FluidViscosity = "Implicit viscosity (fluid)";
         public const string FluidColliders = "Colliders (fluid)";
+        public const string FluidCollidersOutOfReach = "Colliders out of the fluid's reach";
         public const string SoftBodyCollisions = "Colliders (soft body)";
         public const string Plasticity = "Plasticity (shape matching)";
         public const string FluidSoftBodyCoupling = "Fluid ↔ soft body coupling";

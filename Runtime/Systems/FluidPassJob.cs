@@ -22,7 +22,10 @@ namespace SoftBodyDynamics
         public float H;
         /// <summary>Number of batches the live particles are split into.</summary>
         public int Batches;
+        /// <summary>The colliders; with <see cref="ColliderCount"/> set, only its first <c>ColliderCount[0]</c> are read.</summary>
         [ReadOnly] public NativeArray<ColliderShape> Colliders;
+        /// <summary>The substep's collider count (one element, written by <see cref="FluidColliderCullJob"/>), or unset for all of <see cref="Colliders"/>.</summary>
+        [ReadOnly] public NativeArray<int> ColliderCount;
         [NativeDisableParallelForRestriction] public NativeArray<float3> Positions, Velocities;
         [NativeDisableParallelForRestriction] public NativeArray<float> Ages, Lifetimes, Attributes;
         [NativeDisableParallelForRestriction] public NativeArray<int> Ids;
@@ -41,7 +44,10 @@ namespace SoftBodyDynamics
             FluidScratch s = FluidScratch.FromFlat(ScratchInts.AsSpan(), ScratchFloats.AsSpan(), ScratchVectors.AsSpan(), capacity, Constants.Grid.CellCount);
             FluidPassCounters counters = Counters[index];
             int count = Count[0];
-            FluidPasses.Run(Pass, Constants, Colliders.AsReadOnlySpan(), p, s, index, Batches, ref count, H, ref counters);
+            System.ReadOnlySpan<ColliderShape> colliders = Colliders.AsReadOnlySpan();
+            if (ColliderCount.IsCreated)
+                colliders = colliders.Slice(0, math.clamp(ColliderCount[0], 0, colliders.Length));
+            FluidPasses.Run(Pass, Constants, colliders, p, s, index, Batches, ref count, H, ref counters);
             // Only the sort changes the count, and it runs as a single batch.
             if (Pass == FluidPass.Sort || Pass == FluidPass.SortWithPrevious)
                 Count[0] = count;

@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Runner
         public static readonly string[] Effects =
         {
             EffectNames.ShapeMatchingBody, EffectNames.MassSpringBody, EffectNames.FemBody, EffectNames.Fluid,
-            EffectNames.FlockingCohesion, EffectNames.AkinciCohesion, EffectNames.FluidViscosity, EffectNames.FluidColliders,
+            EffectNames.FlockingCohesion, EffectNames.AkinciCohesion, EffectNames.FluidViscosity, EffectNames.FluidColliders, EffectNames.FluidCollidersOutOfReach,
             EffectNames.SoftBodyCollisions, EffectNames.Plasticity, EffectNames.FluidSoftBodyCoupling, EffectNames.SoftSoftContacts,
             EffectNames.FluidRenderer,
         };

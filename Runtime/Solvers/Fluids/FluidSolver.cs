@@ -233,10 +233,18 @@ namespace SoftBodyDynamics.Solvers
             Span<FluidPass> passes = stackalloc FluidPass[FluidSubstepPasses.MaxPasses];
             int passCount = FluidSubstepPasses.Write(c, plan.H, colliders.Length > 0, passes);
             batches = math.max(1, batches);
+            // Each substep sees only the colliders it can touch (FluidColliderReach): the same bits, less work.
+            bool cull = colliders.Length > 0 && colliders.Length <= FluidColliderReach.MaxCulled;
+            Span<ColliderShape> near = stackalloc ColliderShape[cull ? colliders.Length : 0];
             for (int k = 0; k < plan.Substeps; k++)
+            {
+                ReadOnlySpan<ColliderShape> reach = cull
+                    ? near.Slice(0, FluidColliderReach.Near(c, colliders, p.Positions.Slice(0, count), plan.H, near))
+                    : colliders;
                 for (int q = 0; q < passCount; q++)
                     for (int b = 0; b < batches; b++)
-                        FluidPasses.Run(passes[q], c, colliders, p, s, b, batches, ref count, plan.H, ref counters);
+                        FluidPasses.Run(passes[q], c, reach, p, s, b, batches, ref count, plan.H, ref counters);
+            }
             return Finish(plan, counters, dt, count, ref status);
         }
 
