@@ -108,6 +108,10 @@ namespace SoftBodyDynamics.Authoring
         [Range(1, 256)]
         public int maxSubsteps = 32;
 
+        [Tooltip("Fewest substeps per fixed step (0–256; 0 = the CFL limit alone). More substeps than the CFL limit asks for buy a smaller step; a Soft Body World raises this to its minimum.")]
+        [Range(0, 256)]
+        public int minSubsteps = 0;
+
         [Tooltip("Packed: particles live only in the fluid's buffers (cheapest; 100k+ particles). Entities: one entity per particle, instantiated from the particle prefab, that gameplay code can query, tag and destroy.")]
         public FluidStorage storage = FluidStorage.Packed;
 
@@ -180,6 +184,7 @@ namespace SoftBodyDynamics.Authoring
             p.DomainMax = centre + half;
             p.CflNumber = cflNumber;
             p.MaxSubsteps = maxSubsteps;
+            p.MinSubsteps = minSubsteps;
             p.WallFriction = wallFriction;
             p.DomainFriction = UnityMathConversions.ToFloat3(domainFriction);
             p.DomainNoSlip = UnityMathConversions.ToFloat3(domainNoSlip);

@@ -7,15 +7,15 @@ namespace SoftBodyDynamics
     /// World-level settings of every particle body and fluid (a singleton; optional). When it exists, every body and fluid
     /// falls with <see cref="Gravity"/> instead of its own (e.g.
     /// <see cref="SoftBodyDynamics.Solvers.ParticleBodySettings.Acceleration"/>,
-    /// <see cref="SoftBodyDynamics.Solvers.FluidParameters.Gravity"/>), and every body takes at least
-    /// <see cref="MinSubsteps"/> substeps per fixed step (a fluid's substeps follow its CFL limit). Without it each uses its own values.
+    /// <see cref="SoftBodyDynamics.Solvers.FluidParameters.Gravity"/>), and every body and fluid takes at least
+    /// <see cref="MinSubsteps"/> substeps per fixed step (a fluid more when its CFL limit asks). Without it each uses its own values.
     /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
     /// </summary>
     public struct SoftBodyWorldSettings : IComponentData
     {
         /// <summary>Acceleration of gravity for every particle body and fluid (m/s²).</summary>
         public float3 Gravity;
-        /// <summary>Fewest substeps per fixed step for every body (1–64); a body's own minimum applies if larger.</summary>
+        /// <summary>Fewest substeps per fixed step for every body and fluid (1–64); a body's or fluid's own minimum applies if larger.</summary>
         public int MinSubsteps;
 
         /// <summary>Earth gravity, one substep minimum.</summary>
@@ -42,10 +42,11 @@ namespace SoftBodyDynamics
             return body;
         }
 
-        /// <summary>A fluid as this world steps it: the world's gravity (its substeps stay those of its CFL limit).</summary>
+        /// <summary>A fluid as this world steps it: the world's gravity and at least its substeps (more when the CFL limit asks).</summary>
         public SoftBodyDynamics.Solvers.FluidParameters Apply(SoftBodyDynamics.Solvers.FluidParameters fluid)
         {
             fluid.Gravity = Gravity;
+            fluid.MinSubsteps = math.max(fluid.MinSubsteps, MinSubsteps);
             return fluid;
         }
     }

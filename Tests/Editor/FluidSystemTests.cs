@@ -74,6 +74,26 @@ namespace SoftBodyDynamics.Tests.Editor
         }
 
         [Test]
+        public void WorldSettings_GiveTheFluidTheirGravityAndMinimumSubsteps()
+        {
+            Entity fluid = CreateFluid(2000);
+            CreateTap(fluid, 300f, 0f);
+            Update(2);
+            int alone = m_Manager.GetComponentData<FluidRuntime>(fluid).LastFrame.Step.Substeps;
+            Entity world = m_Manager.CreateEntity();
+            m_Manager.AddComponentData(world, new SoftBodyWorldSettings { Gravity = float3.zero, MinSubsteps = alone + 3 });
+            Update(10);
+            Assert.That(m_Manager.GetComponentData<FluidRuntime>(fluid).LastFrame.Step.Substeps, Is.EqualTo(alone + 3), "the world's minimum substeps");
+            // Without gravity the poured particles keep the tap's 1 m/s downward, give or take the pressure between them.
+            DynamicBuffer<FluidVelocity> v = m_Manager.GetBuffer<FluidVelocity>(fluid, true);
+            FluidStatus status = Status(fluid);
+            float fastest = 0f;
+            for (int i = 0; i < status.Count; i++)
+                fastest = math.max(fastest, math.length(v[i].Value));
+            Assert.That(fastest, Is.LessThan(1.5f), "under Earth gravity the oldest particles, 12 frames out of the tap, would move at 2.96 m/s");
+        }
+
+        [Test]
         public void Tap_FillsThePackedBuffers_AndParticlesFall()
         {
             Entity fluid = CreateFluid(2000);

@@ -110,6 +110,11 @@ namespace SoftBodyDynamics.Solvers
         public float CflNumber;
         /// <summary>Most substeps per step (1–256). When the CFL limit asks for more, the step reports it and runs this many. Default 32.</summary>
         public int MaxSubsteps;
+        /// <summary>
+        /// Fewest substeps per step (0–256, at most <see cref="MaxSubsteps"/> take effect): more than the CFL limit asks for
+        /// buy a smaller h. 0 = the CFL limit alone (default). A <c>SoftBodyWorldSettings</c> singleton raises it to its minimum.
+        /// </summary>
+        public int MinSubsteps;
         /// <summary>Speed bound (m/s): faster particles are slowed to it and counted in the report. Default 50 m/s.</summary>
         public float MaxSpeed;
         /// <summary>Density ratio ρ/ρ₀ above which a particle is counted as over-compressed in the report. Default 1.5.</summary>
@@ -203,6 +208,7 @@ namespace SoftBodyDynamics.Solvers
             p.Periodic = new bool3(Periodic.x && extent.x >= shortest, Periodic.y && extent.y >= shortest, Periodic.z && extent.z >= shortest);
             p.CflNumber = math.isfinite(CflNumber) ? math.clamp(CflNumber, 0.05f, 1f) : d.CflNumber;
             p.MaxSubsteps = math.clamp(MaxSubsteps, 1, SubstepLimit);
+            p.MinSubsteps = math.clamp(MinSubsteps, 0, SubstepLimit);
             p.MaxSpeed = Finite.Positive(MaxSpeed, d.MaxSpeed);
             p.MaxDensityRatio = math.isfinite(MaxDensityRatio) && MaxDensityRatio > 1f ? MaxDensityRatio : d.MaxDensityRatio;
             return p;

@@ -100,12 +100,14 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Substeps for a step of <paramref name="dt"/> at fastest speed <paramref name="maxSpeed"/> (m/s) of a fluid
         /// <paramref name="depth"/> metres deep along gravity (position-based only: <see cref="DepthSubstep"/>): (wanted, used).
+        /// At least <see cref="FluidParameters.MinSubsteps"/> are wanted, up to the cap.
         /// </summary>
         public static int2 Substeps(in FluidConstants c, float maxSpeed, float depth, float dt)
         {
             float limit = math.min(CflSubstep(c, maxSpeed, dt), DepthSubstep(c, depth));
             float ratio = dt / limit;
             int wanted = ratio < FluidParameters.SubstepLimit * 4f ? math.max(1, (int)math.ceil(ratio)) : FluidParameters.SubstepLimit * 4;
+            wanted = math.max(wanted, math.min(c.Parameters.MinSubsteps, c.Parameters.MaxSubsteps));
             return new int2(wanted, math.min(wanted, c.Parameters.MaxSubsteps));
         }
 

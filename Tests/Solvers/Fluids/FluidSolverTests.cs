@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using NUnit.Framework;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
@@ -325,6 +326,24 @@ namespace SoftBodyDynamics.Tests.Solvers
             for (int f = 0; f < 30; f++)
                 Assert.AreEqual(0, FluidTestScenes.Step(c, b, 1f / 60f).Invalid, "no spread to the neighbours");
             Assert.AreEqual(n - 1, b.Status.Count);
+        }
+
+        [Test]
+        public void MinSubsteps_RaiseTheSubstepsUpToTheCap_AndShortenH()
+        {
+            FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.2f, 0.4f, 0.2f));
+            int cfl = FluidSolver.Substeps(new FluidConstants(p), 0f, 0f, 1f / 60f).x;
+            Assert.That(cfl, Is.LessThan(p.MaxSubsteps - 1), "the CFL limit alone leaves room below the cap");
+            p.MinSubsteps = cfl + 2;
+            Assert.That(FluidSolver.Substeps(new FluidConstants(p), 0f, 0f, 1f / 60f), Is.EqualTo(new int2(cfl + 2, cfl + 2)));
+            p.MinSubsteps = cfl - 1;
+            Assert.That(FluidSolver.Substeps(new FluidConstants(p), 0f, 0f, 1f / 60f), Is.EqualTo(new int2(cfl, cfl)), "below the CFL count: no effect");
+            p.MinSubsteps = p.MaxSubsteps + 10;
+            Assert.That(FluidSolver.Substeps(new FluidConstants(p), 0f, 0f, 1f / 60f), Is.EqualTo(new int2(p.MaxSubsteps, p.MaxSubsteps)),
+                "capped, with h = dt / cap: the step still simulates the whole dt");
+            var issues = new List<SoftBodyIssue>();
+            Assert.That(FluidValidation.Validate(p, 1000, issues), Is.True);
+            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidSubstepCapTooLow && i.Message.Contains("fewest substeps")), string.Join("\n", issues));
         }
 
         [Test]

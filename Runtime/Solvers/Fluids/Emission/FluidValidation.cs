@@ -50,7 +50,9 @@ namespace SoftBodyDynamics.Solvers
                 int needed = FluidSolver.ViscosityIterationsNeeded(c, 1f / 60f / substeps.y);
                 if (needed > FluidParameters.MaxViscosityIterations && c.Parameters.Viscosity > 0f && c.Parameters.ViscosityIterations > 0)
                     issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidViscosityUnresolved, -1, $"At this viscosity, spacing and substep the implicit viscosity needs {needed} Jacobi iterations to reach 1 % of its solution, more than the {FluidParameters.MaxViscosityIterations} a substep runs: a steady flow will run faster than the fluid's viscosity allows. Raise the spacing or the speed of sound (shorter substeps), or lower the viscosity."));
-                if (substeps.x > substeps.y)
+                if (p.MinSubsteps > p.MaxSubsteps)
+                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSubstepCapTooLow, -1, $"The fewest substeps ({p.MinSubsteps}) are above the cap ({p.MaxSubsteps}): the step takes {p.MaxSubsteps}. Raise the cap or lower the minimum."));
+                else if (substeps.x > substeps.y)
                     issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSubstepCapTooLow, -1, $"At rest the CFL limit already asks for {substeps.x} substeps per 1/60 s frame, above the cap of {substeps.y}: lower the speed of sound or raise the substep cap."));
                 else if (c.Parameters.Solver == FluidSolverKind.PositionBased)
                 {
