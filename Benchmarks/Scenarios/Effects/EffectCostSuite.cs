@@ -75,6 +75,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 "without them; out of reach: sphere, capsule and box hanging above the water, against none (the box's walls are the " +
                 "fluid's domain, not colliders).",
                 "Cohesion and the implicit viscosity are priced on the droplet of FluidAccuracy.",
+                "Quick run: every row but the two fluid-collider ones.",
             },
             Details = "effects.md",
         };
@@ -98,7 +99,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public IEnumerable<IScenario> Scenarios(RunScope scope)
         {
             foreach (Case c in Cases)
-                yield return new EffectScenario(c);
+                if (scope != RunScope.Quick || (c.Effect != EffectNames.FluidColliders && c.Effect != EffectNames.FluidCollidersOutOfReach))
+                    yield return new EffectScenario(c);
         }
 
         /// <summary>One effect line per row: the fastest frames with and without it and their difference.</summary>
