@@ -21,13 +21,7 @@ namespace SoftBodyDynamics
         public void OnCreate(ref SystemState state)
         {
             m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
-            var readers = new NativeArray<EntityQuery>(4, Allocator.Temp);
-            readers[0] = SystemAPI.QueryBuilder().WithAll<ShapeMatchingShape>().Build();
-            readers[1] = SystemAPI.QueryBuilder().WithAll<MassSpringShape>().Build();
-            readers[2] = SystemAPI.QueryBuilder().WithAll<FemShape>().Build();
-            readers[3] = SystemAPI.QueryBuilder().WithAll<FluidSettings>().Build();
-            state.RequireAnyForUpdate(readers);
-            readers.Dispose();
+            ColliderWorldReaders.Require(ref state);
             Entity world = state.EntityManager.CreateEntity();
             state.EntityManager.AddBuffer<ColliderWorldShape>(world);
         }

@@ -29,13 +29,7 @@ namespace SoftBodyDynamics
         public void OnCreate(ref SystemState state)
         {
             m_Bodies = SystemAPI.QueryBuilder().WithAll<PhysicsCollider, LocalToWorld>().Build();
-            var readers = new NativeArray<EntityQuery>(4, Allocator.Temp);
-            readers[0] = SystemAPI.QueryBuilder().WithAll<ShapeMatchingShape>().Build();
-            readers[1] = SystemAPI.QueryBuilder().WithAll<MassSpringShape>().Build();
-            readers[2] = SystemAPI.QueryBuilder().WithAll<FemShape>().Build();
-            readers[3] = SystemAPI.QueryBuilder().WithAll<FluidSettings>().Build();
-            state.RequireAnyForUpdate(readers);
-            readers.Dispose();
+            ColliderWorldReaders.Require(ref state);
             state.RequireForUpdate<ColliderWorldShape>();
         }
 
