@@ -185,7 +185,12 @@ namespace SoftBodyDynamics.Tests.Editor
             ParticleBodyStatus status = Status(body);
             Assert.That(status.Center.y, Is.EqualTo(expectedY).Within(1e-4f), "free fall of the centre of mass");
             Assert.That(status.ResetCount, Is.EqualTo(0));
-            Assert.That(m_Manager.GetComponentData<ParticleBodyState>(body).LastReport.Stepped, Is.True);
+            ParticleStepReport shared = m_Manager.GetComponentData<ParticleBodyState>(body).LastReport;
+            ShapeMatchingStepReport full = m_Manager.GetComponentData<ShapeMatchingDiagnostics>(body).LastReport;
+            Assert.That(shared.Stepped, Is.True);
+            Assert.That(full.Stepped, Is.True, "the diagnostics hold the same step's full report");
+            Assert.That(full.Substeps, Is.EqualTo(substeps));
+            Assert.That(shared.Substeps, Is.EqualTo(full.Substeps));
             AssertAllFinite(Positions(body));
 
             LocalTransform transform = m_Manager.GetComponentData<LocalTransform>(body);
