@@ -21,24 +21,11 @@ namespace SoftBodyDynamics
         /// <summary>Earth gravity, one substep minimum.</summary>
         public static SoftBodyWorldSettings Default => new SoftBodyWorldSettings { Gravity = new float3(0f, -9.81f, 0f), MinSubsteps = 1 };
 
-        /// <summary><paramref name="body"/> as this world steps it: the world's gravity and at least its substeps.</summary>
-        public SoftBodyDynamics.Solvers.ShapeMatchingParameters Apply(SoftBodyDynamics.Solvers.ShapeMatchingParameters body)
+        /// <summary>A particle body's shared settings as this world steps it, whatever its method: the world's gravity and at least its substeps.</summary>
+        public SoftBodyDynamics.Solvers.ParticleBodySettings Apply(SoftBodyDynamics.Solvers.ParticleBodySettings body)
         {
-            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
-            return body;
-        }
-
-        /// <summary>A mass-spring body as this world steps it: the world's gravity and at least its substeps.</summary>
-        public SoftBodyDynamics.Solvers.MassSpringParameters Apply(SoftBodyDynamics.Solvers.MassSpringParameters body)
-        {
-            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
-            return body;
-        }
-
-        /// <summary>A finite-element body as this world steps it: the world's gravity and at least its substeps.</summary>
-        public SoftBodyDynamics.Solvers.FemParameters Apply(SoftBodyDynamics.Solvers.FemParameters body)
-        {
-            body.Body = body.Body.InWorld(Gravity, MinSubsteps);
+            body.Acceleration = Gravity;
+            body.Substeps = math.max(body.Substeps, MinSubsteps);
             return body;
         }
 

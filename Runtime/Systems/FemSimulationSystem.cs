@@ -120,7 +120,9 @@ namespace SoftBodyDynamics
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = FemState.FromScratch(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
                     AsSpan(rotations), scratch.AsSpan(), elementScratch.AsSpan(), AsSpan(warmStart));
-                FemParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
+                FemParameters parameters = settings.Value;
+                if (HasWorldSettings)
+                    parameters.Body = World.Apply(parameters.Body);
                 FemStepReport full = FemSolver.Step(blob.AsModel(), parameters,
                     Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();

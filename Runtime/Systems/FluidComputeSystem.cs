@@ -66,7 +66,7 @@ namespace SoftBodyDynamics
             {
                 Entity fluid = fluids[f];
                 // The world's gravity is part of the constants a fluid is taken onto the GPU with.
-                FluidSettings settings = FluidSimulationSystem.WorldApplied(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
+                FluidSettings settings = FluidSystemFrame.InWorld(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
                 if (!m_Runs.TryGetValue(fluid, out Run run) && !TryTake(m, fluid, settings, out run))
                     continue;
                 FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);

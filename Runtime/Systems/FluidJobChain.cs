@@ -24,7 +24,7 @@ namespace SoftBodyDynamics
             JobHandle handle = dependsOn;
             // With colliders, each substep starts with a cull job (FluidColliderReach) whose list the substep's passes read.
             var cull = new FluidColliderCullJob();
-            if (job.Colliders.Length > 0)
+            if (job.Colliders.Length > 0 && FluidColliderReach.Culls(job.Constants))
             {
                 cull = new FluidColliderCullJob
                 {

@@ -61,7 +61,7 @@ namespace SoftBodyDynamics
             // Entities storage first, on the main thread: it changes the world's structure.
             for (int f = 0; f < fluids.Length; f++)
             {
-                FluidSettings settings = WorldApplied(state.EntityManager.GetComponentData<FluidSettings>(fluids[f]), hasWorld, world);
+                FluidSettings settings = FluidSystemFrame.InWorld(state.EntityManager.GetComponentData<FluidSettings>(fluids[f]), hasWorld, world);
                 if (settings.Storage == FluidStorage.Entities)
                     StepEntityFluid(ref state, fluids[f], settings, colliders, taps, tapEntities, drains, dt);
             }
@@ -72,7 +72,7 @@ namespace SoftBodyDynamics
             for (int f = 0; f < fluids.Length; f++)
             {
                 Entity fluid = fluids[f];
-                FluidSettings settings = WorldApplied(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
+                FluidSettings settings = FluidSystemFrame.InWorld(m.GetComponentData<FluidSettings>(fluid), hasWorld, world);
                 if (settings.Storage != FluidStorage.Packed)
                     continue;
                 FluidRuntime runtime = m.GetComponentData<FluidRuntime>(fluid);
@@ -83,14 +83,6 @@ namespace SoftBodyDynamics
             }
             fluids.Dispose();
             inputs.Dispose();
-        }
-
-        /// <summary><paramref name="settings"/> with the world's gravity when a <see cref="SoftBodyWorldSettings"/> exists.</summary>
-        internal static FluidSettings WorldApplied(FluidSettings settings, bool hasWorld, in SoftBodyWorldSettings world)
-        {
-            if (hasWorld)
-                settings.Parameters = world.Apply(settings.Parameters);
-            return settings;
         }
 
         /// <summary>Drains, taps, then the substeps as a job chain (<see cref="FluidJobChain"/>), completed here.</summary>

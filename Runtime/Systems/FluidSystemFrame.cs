@@ -113,6 +113,14 @@ namespace SoftBodyDynamics
     /// </summary>
     static class FluidSystemFrame
     {
+        /// <summary><paramref name="settings"/> as the world steps the fluid: its gravity and minimum substeps when a <see cref="SoftBodyWorldSettings"/> exists.</summary>
+        public static FluidSettings InWorld(FluidSettings settings, bool hasWorld, in SoftBodyWorldSettings world)
+        {
+            if (hasWorld)
+                settings.Parameters = world.Apply(settings.Parameters);
+            return settings;
+        }
+
         /// <summary>Sizes the buffers to the budget if needed; false when they cannot hold it.</summary>
         public static bool Prepare(in FluidSettings settings, ref FluidRuntime runtime, FluidEntityArrays a, out FluidConstants constants)
         {

@@ -110,7 +110,9 @@ namespace SoftBodyDynamics
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = MassSpringState.FromScratch(SoftBodyBuffers.AsSpan(positions), SoftBodyBuffers.AsSpan(velocities),
                     scratch.AsSpan(), springScratch.AsSpan());
-                MassSpringParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
+                MassSpringParameters parameters = settings.Value;
+                if (HasWorldSettings)
+                    parameters.Body = World.Apply(parameters.Body);
                 ParticleStepReport report = MassSpringSolver.Step(blob.AsModel(), parameters,
                     Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();

@@ -95,7 +95,9 @@ namespace SoftBodyDynamics
                 var scratch = new NativeArray<float3>(ShapeMatchingState.ScratchPerParticle * n, Allocator.Temp,
                     NativeArrayOptions.UninitializedMemory);
                 var solverState = SoftBodyBuffers.State(positions, velocities, clusters, quadratic, scratch);
-                ShapeMatchingParameters parameters = HasWorldSettings ? World.Apply(settings.Value) : settings.Value;
+                ShapeMatchingParameters parameters = settings.Value;
+                if (HasWorldSettings)
+                    parameters.Body = World.Apply(parameters.Body);
                 ShapeMatchingStepReport report = ShapeMatchingSolver.Step(blob.AsModel(), parameters,
                     Colliders.AsReadOnlySpan(), DeltaTime, solverState, ref body.Status);
                 scratch.Dispose();

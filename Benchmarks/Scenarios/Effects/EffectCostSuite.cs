@@ -221,19 +221,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         static ColliderShape Floor => ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f));
 
         /// <summary>A jelly cube whose bottom layer is one particle radius above <paramref name="bottom"/> (m), built by <paramref name="create"/> (setup, cell size).</summary>
-        static IMethodBody Cube(float bottom, Func<MethodBodySetup, float, IMethodBody> create)
-        {
-            float cell = JellySize / (JellyEdge - 1), radius = 0.5f * cell;
-            TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(JellySize), new int3(JellyEdge - 1), new float3(0f, bottom + 0.5f * JellySize + radius, 0f));
-            var setup = new MethodBodySetup
-            {
-                Mesh = mesh,
-                Material = ElasticMaterial.Jelly,
-                ParticleRadius = radius,
-                CalibrationLength = JellySize,
-                CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
-            };
-            return create(setup, cell);
-        }
+        static IMethodBody Cube(float bottom, Func<MethodBodySetup, float, IMethodBody> create) =>
+            create(MethodBodySetup.JellyCube(JellySize, JellyEdge, bottom), JellySize / (JellyEdge - 1));
     }
 }

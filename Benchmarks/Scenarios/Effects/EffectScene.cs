@@ -35,8 +35,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         FluidStatus m_FluidStatus;
         bool m_Started;
 
-        /// <summary>Frames run so far, the start's included.</summary>
-        public int Frames { get; private set; }
         /// <summary>Body steps run so far (one per body per frame).</summary>
         public int BodySteps { get; private set; }
         /// <summary>Fluid substeps run so far.</summary>
@@ -135,7 +133,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 LastFluidSubsteps = FluidSolver.Step(FluidConstants, colliders, Frame, Fluid.Particles, Fluid.Scratch, ref Fluid.Status).Substeps;
             BodySteps += LastBodySteps;
             FluidSubsteps += LastFluidSubsteps;
-            Frames++;
         }
     }
 }

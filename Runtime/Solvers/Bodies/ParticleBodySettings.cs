@@ -5,8 +5,8 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>
     /// The settings every particle body has, whatever its method: gravity, substeps, contacts, sleep and the guard's speed
     /// limit. Each method's parameters nest one (<see cref="ShapeMatchingParameters.Body"/>,
-    /// <see cref="MassSpringParameters.Body"/>, <see cref="FemParameters.Body"/>); the world's settings replace its
-    /// gravity and raise its substeps. Units are in each doc comment.
+    /// <see cref="MassSpringParameters.Body"/>, <see cref="FemParameters.Body"/>); the world's settings (a
+    /// <c>SoftBodyWorldSettings</c> singleton) replace its gravity and raise its substeps. Units are in each doc comment.
     /// </summary>
     public struct ParticleBodySettings
     {
@@ -74,15 +74,6 @@ namespace SoftBodyDynamics.Solvers
             p.SleepSpeed = math.isfinite(SleepSpeed) ? math.max(0f, SleepSpeed) : d.SleepSpeed;
             p.SleepDelay = math.isfinite(SleepDelay) ? math.max(0f, SleepDelay) : d.SleepDelay;
             p.MaxSpeed = MaxSpeed > 0f && math.isfinite(MaxSpeed) ? MaxSpeed : d.MaxSpeed;
-            return p;
-        }
-
-        /// <summary>These settings as a world steps them: its gravity and at least its substeps.</summary>
-        public ParticleBodySettings InWorld(float3 gravity, int minSubsteps)
-        {
-            ParticleBodySettings p = this;
-            p.Acceleration = gravity;
-            p.Substeps = math.max(Substeps, minSubsteps);
             return p;
         }
     }

@@ -16,6 +16,9 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Most colliders a step culls on the stack; with more, every collider is kept.</summary>
         public const int MaxCulled = 128;
 
+        /// <summary>Whether a substep of <paramref name="c"/> has a reach to cull by: weakly compressible only.</summary>
+        public static bool Culls(in FluidConstants c) => c.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
+
         /// <summary>
         /// Copies into <paramref name="near"/> (length ≥ <paramref name="colliders"/>' length) the colliders a substep of
         /// <paramref name="h"/> seconds can touch, in their order, and returns how many. Non-finite positions (particles the
@@ -24,7 +27,7 @@ namespace SoftBodyDynamics.Solvers
         public static int Near(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<float3> positions, float h,
             Span<ColliderShape> near)
         {
-            if (c.Parameters.Solver != FluidSolverKind.WeaklyCompressible)
+            if (!Culls(c))
             {
                 colliders.CopyTo(near);
                 return colliders.Length;

@@ -236,7 +236,7 @@ namespace SoftBodyDynamics.Solvers
             int passCount = FluidSubstepPasses.Write(c, plan.H, colliders.Length > 0, passes);
             batches = math.max(1, batches);
             // Each substep sees only the colliders it can touch (FluidColliderReach): the same bits, less work.
-            bool cull = colliders.Length > 0 && colliders.Length <= FluidColliderReach.MaxCulled;
+            bool cull = colliders.Length > 0 && colliders.Length <= FluidColliderReach.MaxCulled && FluidColliderReach.Culls(c);
             Span<ColliderShape> near = stackalloc ColliderShape[cull ? colliders.Length : 0];
             for (int k = 0; k < plan.Substeps; k++)
             {

@@ -27,6 +27,24 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// </summary>
         public float DampingFrequency;
 
+        /// <summary>
+        /// A jelly cube of <paramref name="size"/> m with <paramref name="edge"/> nodes per axis (6 tetrahedra per cell),
+        /// centred above the origin with its bottom layer one particle radius (half a cell) above the height
+        /// <paramref name="bottom"/> (m): resting on a floor there from the first substep. Calibrated in compression.
+        /// </summary>
+        public static MethodBodySetup JellyCube(float size, int edge, float bottom)
+        {
+            float radius = 0.5f * size / (edge - 1);
+            return new MethodBodySetup
+            {
+                Mesh = BoxTetrahedra.Create(new float3(size), new int3(edge - 1), new float3(0f, bottom + 0.5f * size + radius, 0f)),
+                Material = ElasticMaterial.Jelly,
+                ParticleRadius = radius,
+                CalibrationLength = size,
+                CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
+            };
+        }
+
         /// <summary>Lumped masses mᵢ = Σ ρ V_t / 4 over the tetrahedra t that hold node i (kg).</summary>
         public float[] LumpedMasses()
         {

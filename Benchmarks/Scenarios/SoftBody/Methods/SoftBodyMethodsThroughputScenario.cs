@@ -55,18 +55,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            float radius = 0.5f * CellSize;
-            // Rest shape centred above the origin with its bottom layer one particle radius above the floor: contacts from the first substep.
-            TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(BodySize), new int3(m_Edge - 1), new float3(0f, 0.5f * BodySize + radius, 0f));
-            var setup = new MethodBodySetup
-            {
-                Mesh = mesh,
-                Material = ElasticMaterial.Jelly,
-                ParticleRadius = radius,
-                CalibrationLength = BodySize,
-                CalibrationLoad = ShapeMatchingCalibration.Load.Compression,
-            };
-            m_Body = m_Variant.Create(setup, CellSize);
+            // Rest shape with its bottom layer one particle radius above the floor: contacts from the first substep.
+            m_Body = m_Variant.Create(MethodBodySetup.JellyCube(BodySize, m_Edge, 0f), CellSize);
             m_Colliders = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
             m_CycleStep = m_Resets = 0;
         }
