@@ -29,7 +29,7 @@ namespace SoftBodyDynamics.Benchmarks
                 Assert.Ignore("This device runs no compute shaders or asynchronous read-backs.");
             var shader = (ComputeShader)AssetDatabase.LoadAssetAtPath(k_ShaderPath, typeof(ComputeShader));
             Assert.That(shader, Is.Not.Null, k_ShaderPath);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(1f), new int3(cells), float3.zero);
             MassSpringModelData body = MassSpringModelData.FromMesh(mesh, ElasticMaterial.Jelly, MassSpringBuildSettings.Default, issues, out _);
             int n = body.ParticleCount, m = body.SpringCount;

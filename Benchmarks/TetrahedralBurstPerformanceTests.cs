@@ -32,7 +32,7 @@ namespace SoftBodyDynamics.Benchmarks
         [Test, Performance]
         public void MassSpring_Step_8CubedCells_BurstJob([Values] MassSpringIntegrator integrator)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringModelData model = MassSpringModelData.FromMesh(Cube(), ElasticMaterial.Jelly, MassSpringBuildSettings.Default, issues, out _);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
             MassSpringParameters parameters = MassSpringParameters.Default;
@@ -80,7 +80,7 @@ namespace SoftBodyDynamics.Benchmarks
         [Test, Performance]
         public void Fem_Step_8CubedCells_BurstJob([Values] FemMaterialModel materialModel, [Values] FemIntegrator integrator)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FemModelData model = FemModelData.Create(Cube(), ElasticMaterial.Jelly, default, issues);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
             FemParameters parameters = FemParameters.Default;

@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Editor
                 string prefix = several ? tap.name + ": " : "";
                 if (tap.fluid == null)
                 {
-                    m_Readout.Add(SoftBodyInspectorSupport.IssueBox(prefix + "Assign the Fluid this tap pours into.", SoftBodyIssueSeverity.Error));
+                    m_Readout.Add(SoftBodyInspectorSupport.IssueBox(prefix + "Assign the Fluid this tap pours into.", IssueSeverity.Error));
                     continue;
                 }
                 double alive = tap.SteadyStateAlive();
@@ -65,9 +65,9 @@ namespace SoftBodyDynamics.Editor
                     ? $"{prefix}Steady state: unbounded (particles live forever); budget {tap.fluid.particleBudget}."
                     : $"{prefix}Steady state: about {alive:0} alive particles (rate × lifetime); budget {tap.fluid.particleBudget}.";
                 m_Readout.Add(new HelpBox(readout, HelpBoxMessageType.Info));
-                var issues = new List<SoftBodyIssue>();
+                var issues = new List<ValidationIssue>();
                 FluidValidation.ValidateTap(tap.ToSettings(), tap.bursts ?? new FluidTapBurst[0], tap.fluid.particleSpacing, tap.fluid.particleBudget, issues);
-                foreach (SoftBodyIssue issue in issues)
+                foreach (ValidationIssue issue in issues)
                     m_Readout.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
         }

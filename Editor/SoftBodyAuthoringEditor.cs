@@ -177,7 +177,7 @@ namespace SoftBodyDynamics.Editor
                 if (counts.Length > 0)
                     counts.Append('\n');
                 counts.Append(prefix).Append(report.Method == SoftBodyMethod.ShapeMatching ? Describe(report.Result) : Describe(report.Tetrahedral));
-                foreach (SoftBodyIssue issue in report.Issues)
+                foreach (ValidationIssue issue in report.Issues)
                     m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             m_Counts.text = counts.ToString();

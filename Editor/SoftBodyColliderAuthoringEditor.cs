@@ -54,7 +54,7 @@ namespace SoftBodyDynamics.Editor
                 usesRadius |= collider.shape == ColliderShapeType.Sphere || collider.shape == ColliderShapeType.Capsule;
                 usesCapsule |= collider.shape == ColliderShapeType.Capsule;
                 string prefix = several ? collider.name + ": " : "";
-                foreach (SoftBodyIssue issue in SoftBodyColliderValidation.Validate(collider))
+                foreach (ValidationIssue issue in SoftBodyColliderValidation.Validate(collider))
                     m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             Show(m_Size, usesSize);

@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Editor
         }
 
         /// <summary>A help box showing <paramref name="message"/> as an error or a warning.</summary>
-        public static HelpBox IssueBox(string message, SoftBodyIssueSeverity severity) =>
-            new HelpBox(message, severity == SoftBodyIssueSeverity.Error ? HelpBoxMessageType.Error : HelpBoxMessageType.Warning);
+        public static HelpBox IssueBox(string message, IssueSeverity severity) =>
+            new HelpBox(message, severity == IssueSeverity.Error ? HelpBoxMessageType.Error : HelpBoxMessageType.Warning);
     }
 }

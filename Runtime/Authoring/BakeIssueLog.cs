@@ -11,17 +11,17 @@ namespace SoftBodyDynamics.Authoring
         /// Logs every issue as "<paramref name="label"/> on 'name': message" (errors end with "<paramref name="notBaked"/>")
         /// and returns true when any is an error, in which case the caller bakes nothing.
         /// </summary>
-        public static bool Report(List<SoftBodyIssue> issues, string label, Object context, string notBaked)
+        public static bool Report(List<ValidationIssue> issues, string label, Object context, string notBaked)
         {
-            foreach (SoftBodyIssue issue in issues)
+            foreach (ValidationIssue issue in issues)
             {
                 string message = $"{label} on '{context.name}': {issue.Message}";
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
+                if (issue.Severity == IssueSeverity.Error)
                     Debug.LogError(message + " " + notBaked, context);
                 else
                     Debug.LogWarning(message, context);
             }
-            return SoftBodyIssue.AnyError(issues);
+            return ValidationIssue.AnyError(issues);
         }
     }
 }

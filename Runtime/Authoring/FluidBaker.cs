@@ -16,19 +16,19 @@ namespace SoftBodyDynamics.Authoring
         {
             DependsOn(authoring.transform);
             FluidParameters parameters = authoring.ToParameters();
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FluidValidation.Validate(parameters, authoring.particleBudget, issues);
             if (authoring.storage == FluidStorage.Entities && authoring.particlePrefab == null)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidPrefabMissing, -1,
+                issues.Add(ValidationIssue.Error(FluidIssueCode.PrefabMissing, -1,
                     "Entities storage needs a particle prefab with a Metaball Particle component; assign one or use Packed storage."));
             if (authoring.backend != FluidBackend.Cpu && authoring.computeShader == null)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidComputeShaderMissing, -1,
+                issues.Add(ValidationIssue.Warning(FluidIssueCode.ComputeShaderMissing, -1,
                     "The fluid asks for the GPU but has no compute shader: assign Shaders/FluidSolver.compute, or it runs on the CPU."));
             if (authoring.backend != FluidBackend.Cpu && authoring.storage == FluidStorage.Entities)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidGpuNeedsPackedStorage, -1,
+                issues.Add(ValidationIssue.Warning(FluidIssueCode.GpuNeedsPackedStorage, -1,
                     "Entities storage (one entity per particle) runs on the CPU; use Packed storage to run the fluid on the GPU."));
             if (authoring.backend != FluidBackend.Cpu && authoring.readback == FluidReadback.EveryNFrames && authoring.readbackInterval < 1)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidReadbackIntervalInvalid, -1,
+                issues.Add(ValidationIssue.Error(FluidIssueCode.ReadbackIntervalInvalid, -1,
                     $"The read-back interval is {authoring.readbackInterval} frames; it must be at least 1."));
             if (BakeIssueLog.Report(issues, "Fluid", authoring, "The fluid was not baked."))
                 return;

@@ -11,11 +11,11 @@ namespace SoftBodyDynamics.Authoring
         public override void Bake(FluidDrainAuthoring authoring)
         {
             DependsOn(authoring.transform);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FluidDrain drain = authoring.ToDrain();
             FluidValidation.ValidateDrain(drain, 0, issues);
             if (authoring.fluid == null)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidDrainInvalid, -1, "The drain has no fluid: assign the Fluid it drains."));
+                issues.Add(ValidationIssue.Error(FluidEmissionIssueCode.DrainInvalid, -1, "The drain has no fluid: assign the Fluid it drains."));
             if (BakeIssueLog.Report(issues, "Fluid Drain", authoring, "The drain was not baked."))
                 return;
             AddComponent(GetEntity(TransformUsageFlags.None), new FluidDrainVolume { Drain = drain, Fluid = GetEntity(authoring.fluid, TransformUsageFlags.None) });

@@ -16,18 +16,18 @@ namespace SoftBodyDynamics.Authoring
         {
             var fluid = GetComponent<FluidAuthoring>();
             DependsOn(fluid);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             float scale = authoring.radiusInSpacings;
             if (fluid == null)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidSurfaceInvalid, -1, "The fluid surface needs a Fluid component on the same GameObject."));
+                issues.Add(ValidationIssue.Error(FluidSurfaceIssueCode.SettingsInvalid, -1, "The fluid surface needs a Fluid component on the same GameObject."));
             if (!(scale > 0f) || !math.isfinite(scale))
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidSurfaceInvalid, -1, $"The sphere radius is {scale} particle spacings; it must be positive and finite."));
+                issues.Add(ValidationIssue.Error(FluidSurfaceIssueCode.SettingsInvalid, -1, $"The sphere radius is {scale} particle spacings; it must be positive and finite."));
             else if (scale < 0.5f || scale > 2f)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSurfaceRadiusUnusual, -1,
+                issues.Add(ValidationIssue.Warning(FluidSurfaceIssueCode.RadiusUnusual, -1,
                     $"The sphere radius is {scale} particle spacings: below 0.5 neighbours do not touch (gaps), above 2 the surface blurs."));
             FluidLook look = authoring.Look.Sanitized(out string problems);
             if (problems.Length > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidSurfaceLookReplaced, -1, "Look: " + problems));
+                issues.Add(ValidationIssue.Warning(FluidSurfaceIssueCode.LookReplaced, -1, "Look: " + problems));
             if (BakeIssueLog.Report(issues, "Fluid surface", authoring, "The fluid surface was not baked."))
                 return;
             AddComponent(GetEntity(TransformUsageFlags.None), new FluidSurface

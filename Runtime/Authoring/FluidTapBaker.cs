@@ -15,17 +15,17 @@ namespace SoftBodyDynamics.Authoring
         public override void Bake(FluidTapAuthoring authoring)
         {
             DependsOn(authoring.transform);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FluidTapBurst[] bursts = authoring.bursts ?? new FluidTapBurst[0];
             if (authoring.fluid == null)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FluidTapShapeInvalid, -1, "The tap has no fluid: assign a Fluid to pour into."));
+                issues.Add(ValidationIssue.Error(FluidEmissionIssueCode.TapShapeInvalid, -1, "The tap has no fluid: assign a Fluid to pour into."));
             else
             {
                 DependsOn(authoring.fluid);
                 FluidValidation.ValidateTap(authoring.ToSettings(), bursts, authoring.fluid.particleSpacing, authoring.fluid.particleBudget, issues);
             }
             if (bursts.Length > FluidTap.MaxBursts)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FluidTapBurstInvalid, FluidTap.MaxBursts,
+                issues.Add(ValidationIssue.Warning(FluidEmissionIssueCode.TapBurstInvalid, FluidTap.MaxBursts,
                     $"A tap keeps at most {FluidTap.MaxBursts} bursts; bursts {FluidTap.MaxBursts} and later are ignored."));
             if (BakeIssueLog.Report(issues, "Fluid Tap", authoring, "The tap was not baked."))
                 return;

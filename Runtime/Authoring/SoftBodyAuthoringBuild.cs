@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Authoring
     /// </summary>
     public sealed class SoftBodyAuthoringBuild
     {
-        public readonly List<SoftBodyIssue> Issues = new List<SoftBodyIssue>();
+        public readonly List<ValidationIssue> Issues = new List<ValidationIssue>();
 
         /// <summary>The mesh as read; null when there was no readable mesh.</summary>
         public SoftBodyMeshData Mesh;
@@ -26,7 +26,7 @@ namespace SoftBodyDynamics.Authoring
         public TetrahedralBodyBuild Tetrahedral;
 
         /// <summary>True when the body can be baked: the method's model was built and no issue is an error.</summary>
-        public bool Succeeded => !SoftBodyIssue.AnyError(Issues) && (Method == SoftBodyMethod.ShapeMatching
+        public bool Succeeded => !ValidationIssue.AnyError(Issues) && (Method == SoftBodyMethod.ShapeMatching
             ? Result != null && Result.Succeeded
             : Tetrahedral != null && Tetrahedral.Succeeded);
     }

@@ -9,8 +9,8 @@ namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
     /// Every check on a <see cref="SoftBodyAuthoring"/>, in one place, used by the baker and the inspector:
-    /// 1. a MeshFilter with a mesh (<see cref="SoftBodyIssueCode.NoMesh"/>);
-    /// 2. the mesh is readable on the CPU (<see cref="SoftBodyIssueCode.MeshNotReadable"/>);
+    /// 1. a MeshFilter with a mesh (<see cref="MeshBuildIssueCode.NoMesh"/>);
+    /// 2. the mesh is readable on the CPU (<see cref="MeshBuildIssueCode.MeshNotReadable"/>);
     /// 3. the builder's checks of the mesh and build settings (<see cref="SoftBodyBuilder"/>); without a readable
     ///    mesh, the build settings alone (<see cref="SoftBodyBuildSettingsValidation"/>);
     /// 4. the solver parameters (<see cref="ShapeMatchingParameterValidation"/>).
@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Authoring
         public const float AssumedFixedTimeStep = 1f / 60f;
 
         /// <summary>The issues of <paramref name="authoring"/> (building the body to find them).</summary>
-        public static List<SoftBodyIssue> Validate(SoftBodyAuthoring authoring) => ValidateAndBuild(authoring).Issues;
+        public static List<ValidationIssue> Validate(SoftBodyAuthoring authoring) => ValidateAndBuild(authoring).Issues;
 
         /// <summary>Validates <paramref name="authoring"/> and returns the build the baker needs.</summary>
         public static SoftBodyAuthoringBuild ValidateAndBuild(SoftBodyAuthoring authoring) => ValidateAndBuild(authoring, Build);
@@ -60,7 +60,7 @@ namespace SoftBodyDynamics.Authoring
             }
             if (authoring.method != SoftBodyMethod.ShapeMatching)
             {
-                report.Issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MethodInvalid, -1,
+                report.Issues.Add(ValidationIssue.Error(SoftBodyAuthoringIssueCode.MethodInvalid, -1,
                     $"Method {(int)authoring.method} on '{authoring.name}' is not a soft-body method. Pick Shape Matching, Mass Spring or FEM."));
                 return report;
             }
@@ -83,7 +83,7 @@ namespace SoftBodyDynamics.Authoring
             TetrahedralizationSettings tetrahedralization = authoring.TetrahedralizationSettings;
             bool materialValid = material.IsValid;
             if (!materialValid)
-                report.Issues.Add(SoftBodyIssue.Error(massSpring ? SoftBodyIssueCode.MassSpringMaterialInvalid : SoftBodyIssueCode.FemMaterialInvalid, -1,
+                report.Issues.Add(ValidationIssue.Error(massSpring ? MassSpringIssueCode.MaterialInvalid : FemIssueCode.MaterialInvalid, -1,
                     Invariant($"The material of '{authoring.name}' is invalid (Young's modulus {material.YoungsModulus} Pa, Poisson ratio {material.PoissonRatio}, ")
                     + Invariant($"density {material.Density} kg/m³, damping ratio {material.DampingRatio}). Use a Young's modulus above 0, a Poisson ratio from 0 ")
                     + "to below 0.5, a density above 0 and a damping ratio of at least 0, or pick a preset."));
@@ -110,13 +110,13 @@ namespace SoftBodyDynamics.Authoring
         /// Warns when the body's explicit integrator would take substeps longer than the model's stable step at
         /// <see cref="AssumedFixedTimeStep"/>: the body would blow up and the NaN guard would keep resetting it.
         /// </summary>
-        public static void CheckStableStep(SoftBodyAuthoring authoring, double maxStableStep, List<SoftBodyIssue> issues)
+        public static void CheckStableStep(SoftBodyAuthoring authoring, double maxStableStep, List<ValidationIssue> issues)
         {
             int substeps = Math.Max(1, authoring.substeps);
             double h = AssumedFixedTimeStep / substeps;
             if (authoring.method == SoftBodyMethod.MassSpring)
             {
-                SoftBodyIssue? issue = MassSpringStability.CheckStep(authoring.massSpringIntegrator, h, maxStableStep);
+                ValidationIssue? issue = MassSpringStability.CheckStep(authoring.massSpringIntegrator, h, maxStableStep);
                 if (issue.HasValue)
                     issues.Add(issue.Value);
                 return;
@@ -124,7 +124,7 @@ namespace SoftBodyDynamics.Authoring
             if (!FemRunsExplicit(authoring.femModel, authoring.femIntegrator) || !(h > maxStableStep))
                 return;
             int needed = (int)Math.Ceiling(AssumedFixedTimeStep / maxStableStep);
-            issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemStepAboveStableLimit, -1, Invariant(
+            issues.Add(ValidationIssue.Warning(FemIssueCode.StepAboveStableLimit, -1, Invariant(
                 $"'{authoring.name}' is too stiff for its substep: at a fixed step of {AssumedFixedTimeStep * 1000f:0.##} ms and {substeps} substeps, ")
                 + Invariant($"each substep is {h * 1000.0:0.###} ms, but the explicit integrator is stable only below {maxStableStep * 1000.0:0.####} ms ")
                 + Invariant($"for this material and resolution. Use at least {needed} substeps, a softer material, a lower Resolution, or the ")
@@ -156,25 +156,25 @@ namespace SoftBodyDynamics.Authoring
         /// The MeshFilter's mesh when it exists and is readable; otherwise null, with the issue appended to
         /// <paramref name="issues"/> unless that is null (the gizmo only needs the mesh).
         /// </summary>
-        public static Mesh FindReadableMesh(SoftBodyAuthoring authoring, List<SoftBodyIssue> issues)
+        public static Mesh FindReadableMesh(SoftBodyAuthoring authoring, List<ValidationIssue> issues)
         {
             MeshFilter meshFilter = authoring.GetComponent<MeshFilter>();
             if (meshFilter == null)
             {
-                issues?.Add(SoftBodyIssue.Error(SoftBodyIssueCode.NoMesh, -1,
+                issues?.Add(ValidationIssue.Error(MeshBuildIssueCode.NoMesh, -1,
                     $"'{authoring.name}' has no MeshFilter. Add a MeshFilter with the mesh to simulate (the soft body deforms that mesh)."));
                 return null;
             }
             Mesh mesh = meshFilter.sharedMesh;
             if (mesh == null)
             {
-                issues?.Add(SoftBodyIssue.Error(SoftBodyIssueCode.NoMesh, -1,
+                issues?.Add(ValidationIssue.Error(MeshBuildIssueCode.NoMesh, -1,
                     $"The MeshFilter on '{authoring.name}' has no mesh. Assign the mesh to simulate in its Mesh field."));
                 return null;
             }
             if (!mesh.isReadable)
             {
-                issues?.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MeshNotReadable, -1,
+                issues?.Add(ValidationIssue.Error(MeshBuildIssueCode.MeshNotReadable, -1,
                     $"Mesh '{mesh.name}' on '{authoring.name}' is not readable: every soft body draws its own copy of the mesh, made at "
                     + "run time from the CPU copy. Select the model asset and enable Read/Write in its Model import settings."));
                 return null;

@@ -95,11 +95,11 @@ namespace SoftBodyDynamics.Authoring
             public void AddBlob<T>(ref BlobAssetReference<T> blob) where T : unmanaged => m_Baker.AddBlobAsset(ref blob, out _);
         }
 
-        static void Log(SoftBodyAuthoring authoring, List<SoftBodyIssue> issues)
+        static void Log(SoftBodyAuthoring authoring, List<ValidationIssue> issues)
         {
-            foreach (SoftBodyIssue issue in issues)
+            foreach (ValidationIssue issue in issues)
             {
-                if (issue.Severity == SoftBodyIssueSeverity.Error)
+                if (issue.Severity == IssueSeverity.Error)
                     Debug.LogError($"Soft Body on '{authoring.name}' was not baked ({issue.Code}): {issue.Message}", authoring);
                 else
                     Debug.LogWarning($"Soft Body on '{authoring.name}' ({issue.Code}): {issue.Message}", authoring);

@@ -17,7 +17,7 @@ namespace SoftBodyDynamics.Authoring
             // The world-space shape depends on the whole parent chain of the Transform.
             DependsOn(authoring.transform);
 
-            List<SoftBodyIssue> issues = SoftBodyColliderValidation.Validate(authoring);
+            List<ValidationIssue> issues = SoftBodyColliderValidation.Validate(authoring);
             if (BakeIssueLog.Report(issues, "Soft Body Collider", authoring, "The collider was not baked."))
                 return;
 

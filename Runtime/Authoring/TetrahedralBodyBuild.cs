@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Authoring
     public sealed class TetrahedralBodyBuild
     {
         /// <summary>Errors and warnings, in the order they were found.</summary>
-        public readonly List<SoftBodyIssue> Issues = new List<SoftBodyIssue>();
+        public readonly List<ValidationIssue> Issues = new List<ValidationIssue>();
         /// <summary>The method the model was built for (<see cref="SoftBodyMethod.MassSpring"/> or <see cref="SoftBodyMethod.Fem"/>).</summary>
         public SoftBodyMethod Method;
         /// <summary>The volume mesh and the render embedding; null when the settings were invalid.</summary>
@@ -26,7 +26,7 @@ namespace SoftBodyDynamics.Authoring
         public double MaxStableStep = double.PositiveInfinity;
 
         /// <summary>True when the model for <see cref="Method"/> was built and no issue is an error.</summary>
-        public bool Succeeded => Tetrahedralization != null && Tetrahedralization.Succeeded && !SoftBodyIssue.AnyError(Issues)
+        public bool Succeeded => Tetrahedralization != null && Tetrahedralization.Succeeded && !ValidationIssue.AnyError(Issues)
                                  && (Method == SoftBodyMethod.MassSpring ? MassSpring != null : Fem != null);
 
         /// <summary>Nodes (particles) of the volume mesh; 0 when none was built.</summary>

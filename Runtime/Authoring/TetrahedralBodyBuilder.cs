@@ -50,7 +50,7 @@ namespace SoftBodyDynamics.Authoring
                         parameters.DampingFrequency = fem.DampingFrequency;
                         float beta = FemSolver.DampingCoefficient(build.Fem.AsModel(), parameters.Sanitized());
                         if (!build.Fem.BuildRestFactor(fem.Substep, beta))
-                            build.Issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemRestFactorFailed, -1,
+                            build.Issues.Add(ValidationIssue.Warning(FemIssueCode.RestFactorFailed, -1,
                                 "The rest factor of the implicit step could not be built (its rest system is not positive definite in float64): "
                                 + "the body uses the block-Jacobi preconditioner, with more iterations per substep."));
                     }

@@ -34,10 +34,10 @@ namespace SoftBodyDynamics.Tests.Editor
         }
 
         /// <summary>The codes of the issues of <paramref name="severity"/>, in order.</summary>
-        public static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity)
+        public static List<IssueCode> Codes(List<ValidationIssue> issues, IssueSeverity severity)
         {
-            var codes = new List<SoftBodyIssueCode>();
-            foreach (SoftBodyIssue issue in issues)
+            var codes = new List<IssueCode>();
+            foreach (ValidationIssue issue in issues)
                 if (issue.Severity == severity)
                     codes.Add(issue.Code);
             return codes;

@@ -42,11 +42,11 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.AreEqual(new float3(2f, 4f, 6f), p.DomainMax);
             fluid.preset = FluidAuthoringPreset.Custom;
             Assert.AreEqual(5f, fluid.ToParameters().RestDensity);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.IsTrue(FluidValidation.Validate(fluid.ToParameters(), fluid.particleBudget, issues));
             fluid.restDensity = -1f;
             Assert.IsFalse(FluidValidation.Validate(fluid.ToParameters(), fluid.particleBudget, issues));
-            Assert.AreEqual(SoftBodyIssueCode.FluidDensityInvalid, issues[issues.Count - 1].Code);
+            Assert.AreEqual((IssueCode)FluidIssueCode.DensityInvalid, issues[issues.Count - 1].Code);
         }
 
         [Test]
@@ -61,9 +61,9 @@ namespace SoftBodyDynamics.Tests.Editor
             Assert.AreEqual(new float3(0f, 1f, 0f), s.Position);
             tap.rate = 100f;
             tap.lifetime = 5f;
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.IsFalse(FluidValidation.ValidateTap(tap.ToSettings(), tap.bursts, fluid.particleSpacing, fluid.particleBudget, issues));
-            Assert.AreEqual(SoftBodyIssueCode.FluidTapOverBudget, issues[0].Code, "100/s × 5 s = 500 alive > budget 100");
+            Assert.AreEqual((IssueCode)FluidEmissionIssueCode.TapOverBudget, issues[0].Code, "100/s × 5 s = 500 alive > budget 100");
             Assert.That(tap.SteadyStateAlive(), Is.EqualTo(500.0).Within(1e-6));
         }
 

@@ -52,9 +52,9 @@ namespace SoftBodyDynamics.Tests.Editor
             return collider;
         }
 
-        static List<SoftBodyIssueCode> Errors(List<SoftBodyIssue> issues) => AuthoringTestData.Codes(issues, SoftBodyIssueSeverity.Error);
+        static List<IssueCode> Errors(List<ValidationIssue> issues) => AuthoringTestData.Codes(issues, IssueSeverity.Error);
 
-        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
+        static List<IssueCode> Codes(List<ValidationIssue> issues, IssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
 
         // ---------------------------------------------------------------- soft body validation
 
@@ -76,10 +76,10 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             SoftBodyAuthoring body = CreateBody(null, addMeshFilter: false);
 
-            List<SoftBodyIssue> issues = SoftBodyAuthoringValidation.Validate(body);
+            List<ValidationIssue> issues = SoftBodyAuthoringValidation.Validate(body);
 
-            Assert.That(Errors(issues), Does.Contain(SoftBodyIssueCode.NoMesh));
-            Assert.That(issues.Find(i => i.Code == SoftBodyIssueCode.NoMesh).Message, Does.Contain("MeshFilter"));
+            Assert.That(Errors(issues), Does.Contain((IssueCode)MeshBuildIssueCode.NoMesh));
+            Assert.That(issues.Find(i => i.Code == MeshBuildIssueCode.NoMesh).Message, Does.Contain("MeshFilter"));
         }
 
         [Test]
@@ -87,7 +87,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             SoftBodyAuthoring body = CreateBody(null);
 
-            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain(SoftBodyIssueCode.NoMesh));
+            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain((IssueCode)MeshBuildIssueCode.NoMesh));
         }
 
         [Test]
@@ -99,7 +99,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
             SoftBodyAuthoringBuild build = SoftBodyAuthoringValidation.ValidateAndBuild(body);
 
-            Assert.That(Errors(build.Issues), Does.Contain(SoftBodyIssueCode.MeshNotReadable));
+            Assert.That(Errors(build.Issues), Does.Contain((IssueCode)MeshBuildIssueCode.MeshNotReadable));
             Assert.That(build.Succeeded, Is.False);
         }
 
@@ -112,10 +112,10 @@ namespace SoftBodyDynamics.Tests.Editor
             mesh.vertices = vertices;
             SoftBodyAuthoring body = CreateBody(mesh);
 
-            List<SoftBodyIssue> issues = SoftBodyAuthoringValidation.Validate(body);
+            List<ValidationIssue> issues = SoftBodyAuthoringValidation.Validate(body);
 
-            Assert.That(Errors(issues), Does.Contain(SoftBodyIssueCode.NonFiniteVertex));
-            Assert.That(issues.Find(i => i.Code == SoftBodyIssueCode.NonFiniteVertex).Index, Is.EqualTo(5));
+            Assert.That(Errors(issues), Does.Contain((IssueCode)MeshBuildIssueCode.NonFiniteVertex));
+            Assert.That(issues.Find(i => i.Code == MeshBuildIssueCode.NonFiniteVertex).Index, Is.EqualTo(5));
         }
 
         [Test]
@@ -124,7 +124,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.totalMass = -1f;
 
-            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain(SoftBodyIssueCode.TotalMassNotPositive));
+            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain((IssueCode)MeshBuildIssueCode.TotalMassNotPositive));
         }
 
         [Test]
@@ -135,7 +135,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
             SoftBodyAuthoringBuild build = SoftBodyAuthoringValidation.ValidateAndBuild(body);
 
-            Assert.That(Errors(build.Issues), Does.Contain(SoftBodyIssueCode.TooManyParticles));
+            Assert.That(Errors(build.Issues), Does.Contain((IssueCode)MeshBuildIssueCode.TooManyParticles));
             Assert.That(build.Succeeded, Is.False);
         }
 
@@ -145,7 +145,7 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
             body.frequency = -2f;
 
-            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain(SoftBodyIssueCode.FrequencyOutOfRange));
+            Assert.That(Errors(SoftBodyAuthoringValidation.Validate(body)), Does.Contain((IssueCode)ShapeMatchingIssueCode.FrequencyOutOfRange));
         }
 
         [Test]
@@ -184,10 +184,10 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(null);
             body.restitution = 3f;
 
-            List<SoftBodyIssueCode> errors = Errors(SoftBodyAuthoringValidation.Validate(body));
+            List<IssueCode> errors = Errors(SoftBodyAuthoringValidation.Validate(body));
 
-            Assert.That(errors, Does.Contain(SoftBodyIssueCode.NoMesh));
-            Assert.That(errors, Does.Contain(SoftBodyIssueCode.RestitutionOutOfRange));
+            Assert.That(errors, Does.Contain((IssueCode)MeshBuildIssueCode.NoMesh));
+            Assert.That(errors, Does.Contain((IssueCode)ParticleBodyIssueCode.RestitutionOutOfRange));
         }
 
         [TestCase(true)]
@@ -197,10 +197,10 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyAuthoring body = CreateBody(hasMesh ? CreateCubeMesh() : null);
             body.totalMass = 0f;
 
-            List<SoftBodyIssueCode> errors = Errors(SoftBodyAuthoringValidation.Validate(body));
+            List<IssueCode> errors = Errors(SoftBodyAuthoringValidation.Validate(body));
 
-            Assert.That(errors.FindAll(code => code == SoftBodyIssueCode.TotalMassNotPositive), Has.Count.EqualTo(1));
-            Assert.That(errors.Contains(SoftBodyIssueCode.NoMesh), Is.EqualTo(!hasMesh));
+            Assert.That(errors.FindAll(code => code == MeshBuildIssueCode.TotalMassNotPositive), Has.Count.EqualTo(1));
+            Assert.That(errors.Contains(MeshBuildIssueCode.NoMesh), Is.EqualTo(!hasMesh));
         }
 
         // ---------------------------------------------------------------- presets
@@ -276,7 +276,7 @@ namespace SoftBodyDynamics.Tests.Editor
             {
                 SoftBodyAuthoring body = CreateBody(CreateCubeMesh());
                 body.ApplyPreset(preset);
-                var issues = new List<SoftBodyIssue>();
+                var issues = new List<ValidationIssue>();
                 ShapeMatchingParameterValidation.Validate(body.Parameters, issues);
                 Assert.That(Errors(issues), Is.Empty, $"{preset}: {string.Join("\n", issues)}");
             }
@@ -312,8 +312,8 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
             collider.size = new Vector3(1f, 0f, 1f);
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyIssueCode.ColliderSizeNotPositive));
+            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+                Does.Contain((IssueCode)ColliderIssueCode.SizeNotPositive));
         }
 
         [Test]
@@ -322,8 +322,8 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Capsule);
             collider.radius = -0.1f;
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyIssueCode.ColliderSizeNotPositive));
+            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+                Does.Contain((IssueCode)ColliderIssueCode.SizeNotPositive));
         }
 
         [Test]
@@ -332,8 +332,8 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
             collider.radius = float.NaN;
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyIssueCode.ColliderSizeNotFinite));
+            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+                Does.Contain((IssueCode)ColliderIssueCode.SizeNotFinite));
         }
 
         [Test]
@@ -342,10 +342,10 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
             collider.transform.localScale = new Vector3(1f, 2f, 1f);
 
-            List<SoftBodyIssue> issues = SoftBodyColliderValidation.Validate(collider);
+            List<ValidationIssue> issues = SoftBodyColliderValidation.Validate(collider);
 
-            Assert.That(Codes(issues, SoftBodyIssueSeverity.Warning), Does.Contain(SoftBodyIssueCode.ColliderNonUniformScale));
-            Assert.That(SoftBodyIssue.AnyError(issues), Is.False);
+            Assert.That(Codes(issues, IssueSeverity.Warning), Does.Contain((IssueCode)ColliderIssueCode.NonUniformScale));
+            Assert.That(ValidationIssue.AnyError(issues), Is.False);
         }
 
         [Test]
@@ -363,8 +363,8 @@ namespace SoftBodyDynamics.Tests.Editor
             SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
             collider.transform.localScale = new Vector3(1f, 0f, 1f);
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), SoftBodyIssueSeverity.Error),
-                Does.Contain(SoftBodyIssueCode.ColliderScaleZero));
+            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+                Does.Contain((IssueCode)ColliderIssueCode.ScaleZero));
         }
 
         /// <summary>A rotation by +90° about the unit <paramref name="axis"/>.</summary>

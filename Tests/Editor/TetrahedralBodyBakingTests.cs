@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Tests.Editor
             return entity;
         }
 
-        static List<SoftBodyIssueCode> Codes(List<SoftBodyIssue> issues, SoftBodyIssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
+        static List<IssueCode> Codes(List<ValidationIssue> issues, IssueSeverity severity) => AuthoringTestData.Codes(issues, severity);
 
         [Test]
         public void Bake_MassSpring_AddsItsComponents_AndBlobsOfTheBuiltSizes()
@@ -146,7 +146,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
             SoftBodyAuthoringBuild build = SoftBodyAuthoringValidation.ValidateAndBuild(authoring);
 
-            Assert.That(Codes(build.Issues, SoftBodyIssueSeverity.Error), Does.Contain(SoftBodyIssueCode.TetResolutionOutOfRange));
+            Assert.That(Codes(build.Issues, IssueSeverity.Error), Does.Contain((IssueCode)TetrahedralMeshIssueCode.TetResolutionOutOfRange));
             Assert.That(build.Succeeded, Is.False);
         }
 
@@ -158,8 +158,8 @@ namespace SoftBodyDynamics.Tests.Editor
 
             SoftBodyAuthoringBuild build = SoftBodyAuthoringValidation.ValidateAndBuild(authoring);
 
-            SoftBodyIssueCode expected = method == SoftBodyMethod.MassSpring ? SoftBodyIssueCode.MassSpringMaterialInvalid : SoftBodyIssueCode.FemMaterialInvalid;
-            Assert.That(Codes(build.Issues, SoftBodyIssueSeverity.Error), Does.Contain(expected));
+            IssueCode expected = method == SoftBodyMethod.MassSpring ? MassSpringIssueCode.MaterialInvalid : FemIssueCode.MaterialInvalid;
+            Assert.That(Codes(build.Issues, IssueSeverity.Error), Does.Contain(expected));
             Assert.That(build.Issues.Find(i => i.Code == expected).Message, Does.Contain("Young's modulus"));
             Assert.That(build.Succeeded, Is.False);
         }
@@ -178,14 +178,14 @@ namespace SoftBodyDynamics.Tests.Editor
 
             SoftBodyAuthoringBuild build = SoftBodyAuthoringValidation.ValidateAndBuild(authoring);
 
-            SoftBodyIssueCode expected = method == SoftBodyMethod.MassSpring ? SoftBodyIssueCode.MassSpringStepAboveStableLimit : SoftBodyIssueCode.FemStepAboveStableLimit;
-            Assert.That(Codes(build.Issues, SoftBodyIssueSeverity.Warning), Does.Contain(expected), string.Join("\n", build.Issues));
+            IssueCode expected = method == SoftBodyMethod.MassSpring ? MassSpringIssueCode.StepAboveStableLimit : FemIssueCode.StepAboveStableLimit;
+            Assert.That(Codes(build.Issues, IssueSeverity.Warning), Does.Contain(expected), string.Join("\n", build.Issues));
             Assert.That(build.Tetrahedral.MaxStableStep, Is.LessThan(SoftBodyAuthoringValidation.AssumedFixedTimeStep));
             Assert.That(build.Succeeded, Is.True, "a warning does not stop the bake");
 
             authoring.massSpringIntegrator = MassSpringIntegrator.ImplicitEuler;
             authoring.femIntegrator = FemIntegrator.ImplicitEuler;
-            Assert.That(Codes(SoftBodyAuthoringValidation.Validate(authoring), SoftBodyIssueSeverity.Warning), Does.Not.Contain(expected),
+            Assert.That(Codes(SoftBodyAuthoringValidation.Validate(authoring), IssueSeverity.Warning), Does.Not.Contain(expected),
                 "an implicit integrator is stable at any step");
         }
 

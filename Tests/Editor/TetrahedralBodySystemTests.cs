@@ -56,7 +56,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
         Entity CreateMassSpringBody(float3 position, MassSpringParameters parameters)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringModelData model = MassSpringModelData.FromMesh(Cube(), ElasticMaterial.Jelly, MassSpringBuildSettings.Default, issues, out _);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
             BlobAssetReference<MassSpringShapeBlob> blob = MassSpringShapeBlobFactory.Create(model.AsModel(), Allocator.Persistent);
@@ -69,7 +69,7 @@ namespace SoftBodyDynamics.Tests.Editor
 
         Entity CreateFemBody(float3 position, FemParameters parameters, FemElementOrder order = FemElementOrder.Linear, bool restFactor = false)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FemModelData model = FemModelData.Create(Cube(), ElasticMaterial.Jelly, default, issues, order);
             Assert.That(model, Is.Not.Null, string.Join("\n", issues));
             if (restFactor)

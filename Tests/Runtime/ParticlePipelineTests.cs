@@ -77,7 +77,7 @@ namespace SoftBodyDynamics.Tests.Runtime
         Entity Body(SoftBodyMethod method, float3 position)
         {
             TetrahedralMesh mesh = Cube();
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Entity e = Track(m_Manager.CreateEntity());
             m_Manager.AddComponentData(e, LocalTransform.FromPositionRotation(position, quaternion.identity));
             switch (method)

@@ -10,39 +10,39 @@ namespace SoftBodyDynamics.Solvers
     public static class FemParameterValidation
     {
         /// <summary>Appends an error for every bad field; returns true when none was added.</summary>
-        public static bool Validate(in FemParameters p, List<SoftBodyIssue> issues)
+        public static bool Validate(in FemParameters p, List<ValidationIssue> issues)
         {
             int before = issues.Count;
             if ((uint)p.Model > (uint)FemMaterialModel.NeoHookean)
-                ParameterChecks.Error(issues, SoftBodyIssueCode.FemModelInvalid, Invariant($"Model is {(int)p.Model}, which is not Co-Rotational or Neo-Hookean."));
+                ParameterChecks.Error(issues, FemIssueCode.ModelInvalid, Invariant($"Model is {(int)p.Model}, which is not Co-Rotational or Neo-Hookean."));
             if ((uint)p.Integrator > (uint)FemIntegrator.Xpbd)
-                ParameterChecks.Error(issues, SoftBodyIssueCode.FemModelInvalid, Invariant($"Integrator is {(int)p.Integrator}, which is not Symplectic Euler, Implicit Euler or XPBD."));
-            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "Substeps", p.Body.Substeps, FemParameters.MaxSubsteps, "substeps per step");
-            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "Iterations", p.Iterations, FemParameters.MaxIterations, "XPBD iterations per substep");
-            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "CgIterations", p.CgIterations, FemParameters.MaxCgIterations,
+                ParameterChecks.Error(issues, FemIssueCode.ModelInvalid, Invariant($"Integrator is {(int)p.Integrator}, which is not Symplectic Euler, Implicit Euler or XPBD."));
+            ParameterChecks.Count(issues, FemIssueCode.IterationsOutOfRange, "Substeps", p.Body.Substeps, FemParameters.MaxSubsteps, "substeps per step");
+            ParameterChecks.Count(issues, FemIssueCode.IterationsOutOfRange, "Iterations", p.Iterations, FemParameters.MaxIterations, "XPBD iterations per substep");
+            ParameterChecks.Count(issues, FemIssueCode.IterationsOutOfRange, "CgIterations", p.CgIterations, FemParameters.MaxCgIterations,
                 "conjugate-gradient iterations per substep");
-            ParameterChecks.Count(issues, SoftBodyIssueCode.FemIterationsOutOfRange, "NewtonIterations", p.NewtonIterations, FemImplicitEuler.MaxNewtonIterations,
+            ParameterChecks.Count(issues, FemIssueCode.IterationsOutOfRange, "NewtonIterations", p.NewtonIterations, FemImplicitEuler.MaxNewtonIterations,
                 "Newton iterations per substep");
-            ParameterChecks.CgTolerance(issues, SoftBodyIssueCode.FemCgToleranceInvalid, p.CgTolerance, FemParameters.Default.CgTolerance, false);
+            ParameterChecks.CgTolerance(issues, FemIssueCode.CgToleranceInvalid, p.CgTolerance, FemParameters.Default.CgTolerance, false);
             if (ParameterChecks.Finite(issues, "DampingFrequency", p.DampingFrequency, "of at least 0 rad/s") && p.DampingFrequency < 0f)
-                ParameterChecks.Error(issues, SoftBodyIssueCode.FemDampingFrequencyInvalid, Invariant(
+                ParameterChecks.Error(issues, FemIssueCode.DampingFrequencyInvalid, Invariant(
                     $"DampingFrequency is {p.DampingFrequency} rad/s; it must be at least 0 (0 = the model's own estimate)."));
             ParameterChecks.Contact(issues, p.Body.Acceleration, p.Body.MaxDepenetrationSpeed, FemParameters.Default.Body.MaxDepenetrationSpeed,
                 p.Body.ParticleRadius, p.Body.Friction, p.Body.Restitution);
             ParameterChecks.Guard(issues, p.Body.SleepSpeed, p.Body.SleepDelay, p.Body.MaxSpeed, p.RotationIterations);
-            return !SoftBodyIssue.AnyError(issues, before);
+            return !ValidationIssue.AnyError(issues, before);
         }
 
         /// <summary>Appends an error for a bad element order or rest-factor substep; returns true when none was added.</summary>
-        public static bool Validate(in FemBuildSettings s, List<SoftBodyIssue> issues)
+        public static bool Validate(in FemBuildSettings s, List<ValidationIssue> issues)
         {
             int before = issues.Count;
             if (s.Order != FemElementOrder.Linear && s.Order != FemElementOrder.Quadratic)
-                ParameterChecks.Error(issues, SoftBodyIssueCode.FemElementOrderInvalid, Invariant($"Element order is {(int)s.Order}, which is not Linear or Quadratic."));
+                ParameterChecks.Error(issues, FemIssueCode.ElementOrderInvalid, Invariant($"Element order is {(int)s.Order}, which is not Linear or Quadratic."));
             if (s.RestFactor && !(s.Substep > 0f && s.Substep < float.PositiveInfinity))
-                ParameterChecks.Error(issues, SoftBodyIssueCode.FemIterationsOutOfRange, Invariant(
+                ParameterChecks.Error(issues, FemIssueCode.IterationsOutOfRange, Invariant(
                     $"The rest factor's substep is {s.Substep} s; it must be a finite time above 0 (the fixed step over the substeps)."));
-            return !SoftBodyIssue.AnyError(issues, before);
+            return !ValidationIssue.AnyError(issues, before);
         }
     }
 }

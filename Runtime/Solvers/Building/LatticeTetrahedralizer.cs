@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Solvers
         public static TetrahedralizationResult Build(ReadOnlySpan<float3> vertices, ReadOnlySpan<int> triangles, in TetrahedralizationSettings settings)
         {
             var result = new TetrahedralizationResult();
-            List<SoftBodyIssue> issues = result.Issues;
+            List<ValidationIssue> issues = result.Issues;
             bool settingsValid = TetrahedralizationSettings.Validate(settings, issues);
             bool meshValid = MeshChecks.CheckInput(vertices, triangles, issues);
             if (!settingsValid || !meshValid)
@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Solvers
                 return result;
             if (welded.ParticleCount == 1)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.ZeroSize, -1, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.ZeroSize, -1, Invariant(
                     $"All {vertices.Length} vertices were welded into one point: the weld distance {welded.Tolerance} m is not small against the mesh diagonal {bounds.Diagonal} m. Lower WeldTolerance or WeldDistance.")));
                 return result;
             }
@@ -76,7 +76,7 @@ namespace SoftBodyDynamics.Solvers
             if (mesh == null)
             {
                 float3 size = bounds.Extent;
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TooManyNodes, -1, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.TooManyNodes, -1, Invariant(
                     $"At Resolution {settings.Resolution} the {size.x} × {size.y} × {size.z} m mesh fills {cellCount} cells with {nodeCount} nodes; the limit is {settings.MaxNodes}. Lower Resolution or raise MaxNodes.")));
                 return result;
             }
@@ -90,21 +90,21 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>Errors for a surface that is not closed or not consistently wound; a warning for degenerate triangles.</summary>
-        static bool CheckClosed(in MeshTopology topology, List<SoftBodyIssue> issues)
+        static bool CheckClosed(in MeshTopology topology, List<ValidationIssue> issues)
         {
             if (topology.DegenerateTriangleCount > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.DegenerateTriangles, topology.FirstDegenerateTriangle, Invariant(
+                issues.Add(ValidationIssue.Warning(MeshBuildIssueCode.DegenerateTriangles, topology.FirstDegenerateTriangle, Invariant(
                     $"{topology.DegenerateTriangleCount} of {topology.TriangleCount} triangles are degenerate (zero area, or two corners welded into one point); the first is triangle {topology.FirstDegenerateTriangle}. They are ignored; remove them in the modelling tool to silence this.")));
             if (!topology.IsClosed)
             {
                 string why = topology.OpeningDescription(out int index);
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.VolumeMeshNotClosed, index, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.VolumeMeshNotClosed, index, Invariant(
                     $"The mesh is not closed: {why}, so it encloses no volume to fill with tetrahedra. Close the holes in the mesh, or raise WeldTolerance if its seams are split.")));
                 return false;
             }
             if (!topology.IsConsistentlyWound)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.VolumeMeshInconsistentWinding, topology.FirstInconsistentTriangle, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.VolumeMeshInconsistentWinding, topology.FirstInconsistentTriangle, Invariant(
                     $"{topology.InconsistentEdgeCount} edges are traversed in the same direction by both of their triangles (the first by triangle {topology.FirstInconsistentTriangle}): some triangles face the wrong way, so the inside of the volume is undefined. Unify the normals in the modelling tool.")));
                 return false;
             }

@@ -15,11 +15,11 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         /// <param name="vertices">Render-vertex positions (m).</param>
         /// <param name="triangles">Vertex indices, three per triangle.</param>
-        public static bool CheckInput(ReadOnlySpan<float3> vertices, ReadOnlySpan<int> triangles, List<SoftBodyIssue> issues)
+        public static bool CheckInput(ReadOnlySpan<float3> vertices, ReadOnlySpan<int> triangles, List<ValidationIssue> issues)
         {
             if (vertices.Length == 0 || triangles.Length == 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.EmptyMesh, -1, vertices.Length == 0
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.EmptyMesh, -1, vertices.Length == 0
                     ? "The mesh has no vertices. Assign a mesh that has geometry."
                     : Invariant($"The mesh has {vertices.Length} vertices but no triangles. Soft bodies are built from triangle meshes; check that the mesh's submeshes use triangle topology.")));
                 return false;
@@ -29,14 +29,14 @@ namespace SoftBodyDynamics.Solvers
             ok &= CheckTriangles(triangles, vertices.Length, issues);
             if (ok && AxisAlignedBox.Of(vertices).Diagonal == 0f)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.ZeroSize, -1, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.ZeroSize, -1, Invariant(
                     $"All {vertices.Length} vertices are at the same position (bounds of zero size), so there is no shape to keep. Check the mesh and its import scale.")));
                 ok = false;
             }
             return ok;
         }
 
-        static bool CheckVertices(ReadOnlySpan<float3> vertices, List<SoftBodyIssue> issues)
+        static bool CheckVertices(ReadOnlySpan<float3> vertices, List<ValidationIssue> issues)
         {
             int first = -1, count = 0;
             for (int v = 0; v < vertices.Length; v++)
@@ -51,17 +51,17 @@ namespace SoftBodyDynamics.Solvers
                 return true;
             string kind = math.any(math.isnan(vertices[first])) ? "NaN" : "infinity";
             string others = count > 1 ? Invariant($" {count} vertices in all are affected.") : "";
-            issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.NonFiniteVertex, first, Invariant(
+            issues.Add(ValidationIssue.Error(MeshBuildIssueCode.NonFiniteVertex, first, Invariant(
                 $"Vertex {first} has a non-finite position ({kind}).{others} Fix the mesh or its import settings.")));
             return false;
         }
 
-        static bool CheckTriangles(ReadOnlySpan<int> triangles, int vertexCount, List<SoftBodyIssue> issues)
+        static bool CheckTriangles(ReadOnlySpan<int> triangles, int vertexCount, List<ValidationIssue> issues)
         {
             bool ok = true;
             if (triangles.Length % 3 != 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TriangleCountNotMultipleOfThree, -1, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.TriangleCountNotMultipleOfThree, -1, Invariant(
                     $"The index buffer has {triangles.Length} indices, which is not a multiple of 3, so it is not a list of triangles. Re-export the mesh with triangle topology.")));
                 ok = false;
             }
@@ -86,7 +86,7 @@ namespace SoftBodyDynamics.Solvers
             if (firstTriangle >= 0)
             {
                 string others = count > 1 ? Invariant($" {count} triangles in all are affected.") : "";
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TriangleIndexOutOfRange, firstTriangle, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.TriangleIndexOutOfRange, firstTriangle, Invariant(
                     $"Triangle {firstTriangle} refers to vertex {badIndex}, but the mesh has {vertexCount} vertices (valid indices 0 to {vertexCount - 1}).{others} The index buffer is corrupt; re-import or re-export the mesh.")));
                 ok = false;
             }

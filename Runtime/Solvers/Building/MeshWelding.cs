@@ -28,7 +28,7 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Resolves the weld distance of a build's settings (<see cref="ResolveTolerance"/>) and welds <paramref name="vertices"/>;
-        /// false with a <see cref="SoftBodyIssueCode.WeldToleranceInvalid"/> error in <paramref name="issues"/> when the
+        /// false with a <see cref="MeshBuildIssueCode.WeldToleranceInvalid"/> error in <paramref name="issues"/> when the
         /// distance is not finite (an absurd relative tolerance on a huge mesh). The builders of every method call this.
         /// </summary>
         /// <param name="vertices">Render-vertex positions (m), finite.</param>
@@ -38,12 +38,12 @@ namespace SoftBodyDynamics.Solvers
         /// <param name="issues">Receives the error.</param>
         /// <param name="welded">The welded particles (default when false).</param>
         public static bool TryWeld(ReadOnlySpan<float3> vertices, in AxisAlignedBox bounds, float relative, float absolute,
-            List<SoftBodyIssue> issues, out WeldedVertices welded)
+            List<ValidationIssue> issues, out WeldedVertices welded)
         {
             float tolerance = ResolveTolerance(bounds, relative, absolute);
             if (!math.isfinite(tolerance))
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, FormattableString.Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.WeldToleranceInvalid, -1, FormattableString.Invariant(
                     $"WeldTolerance {relative} times the mesh diagonal {bounds.Diagonal} m is not a finite distance. Use a tolerance near the default {DefaultRelativeTolerance}.")));
                 welded = default;
                 return false;

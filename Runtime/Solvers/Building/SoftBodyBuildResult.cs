@@ -22,7 +22,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>True when every edge of the welded surface is shared by exactly two triangles.</summary>
         public bool IsClosed;
         /// <summary>Errors and warnings, in the order they were found.</summary>
-        public List<SoftBodyIssue> Issues = new List<SoftBodyIssue>();
+        public List<ValidationIssue> Issues = new List<ValidationIssue>();
 
         /// <summary>True when the model was built (no error).</summary>
         public bool Succeeded => Model != null;

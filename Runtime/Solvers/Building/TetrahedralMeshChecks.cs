@@ -67,12 +67,12 @@ namespace SoftBodyDynamics.Solvers
         /// tetrahedra (each naming the first, with a count), and warnings for slivers (naming the worst) and unused
         /// nodes. Returns true when there was no error.
         /// </summary>
-        public static bool Check(TetrahedralMesh mesh, List<SoftBodyIssue> issues)
+        public static bool Check(TetrahedralMesh mesh, List<ValidationIssue> issues)
         {
             int nodes = mesh?.Positions?.Length ?? 0, tets = mesh?.Tetrahedra?.Length ?? 0;
             if (nodes == 0 || tets == 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.EmptyTetrahedralMesh, -1, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.EmptyTetrahedralMesh, -1, Invariant(
                     $"The tetrahedral mesh has {nodes} nodes and {tets} tetrahedra; it needs at least 4 nodes and 1 tetrahedron.")));
                 return false;
             }
@@ -89,7 +89,7 @@ namespace SoftBodyDynamics.Solvers
                     firstNonFinite = n;
             }
             if (nonFinite > 0)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.NonFiniteNode, firstNonFinite, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.NonFiniteNode, firstNonFinite, Invariant(
                     $"Node {firstNonFinite} has a non-finite position (NaN or infinity); {nonFinite} nodes in all. Fix the volume mesh.")));
 
             var used = new bool[nodes];
@@ -139,17 +139,17 @@ namespace SoftBodyDynamics.Solvers
             if (outCount > 0)
             {
                 int4 q = mesh.Tetrahedra[firstOut];
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TetrahedronIndexOutOfRange, firstOut, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.TetrahedronIndexOutOfRange, firstOut, Invariant(
                     $"Tetrahedron {firstOut} has nodes ({q.x}, {q.y}, {q.z}, {q.w}), but the mesh has {nodes} nodes (valid indices 0 to {nodes - 1}); {outCount} tetrahedra in all. The volume mesh is corrupt; rebuild it.")));
             }
             if (flatCount > 0)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TetrahedronDegenerate, firstFlat, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.TetrahedronDegenerate, firstFlat, Invariant(
                     $"Tetrahedron {firstFlat} has zero volume (a repeated node, or its nodes lie in a plane to float precision: quality at most {DegenerateQuality}); {flatCount} tetrahedra in all. Remove them from the volume mesh.")));
             if (invertedCount > 0)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TetrahedronInverted, firstInverted, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.TetrahedronInverted, firstInverted, Invariant(
                     $"Tetrahedron {firstInverted} has negative volume {invertedVolume:G4} m³: its nodes (a, b, c, d) are not ordered so that (b − a)·((c − a) × (d − a)) > 0; {invertedCount} tetrahedra in all. Swap two nodes of each, or export the mesh with consistent orientation.")));
             if (slivers > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.TetrahedronSliver, worst, Invariant(
+                issues.Add(ValidationIssue.Warning(TetrahedralMeshIssueCode.TetrahedronSliver, worst, Invariant(
                     $"{slivers} of {tets} tetrahedra are badly shaped (quality 6√2·V/ℓ³_rms below {SliverQuality}; 1 is regular); the worst is tetrahedron {worst} at {worstQuality:G3}. They make the body stiff along their thin direction and need smaller steps; remesh with better-shaped elements.")));
             if (outCount == 0)
             {
@@ -163,10 +163,10 @@ namespace SoftBodyDynamics.Solvers
                         firstUnused = n;
                 }
                 if (unused > 0)
-                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.UnusedNodes, firstUnused, Invariant(
+                    issues.Add(ValidationIssue.Warning(TetrahedralMeshIssueCode.UnusedNodes, firstUnused, Invariant(
                         $"{unused} of {nodes} nodes belong to no tetrahedron (the first is node {firstUnused}): they get no mass and no forces. Remove them from the volume mesh.")));
             }
-            return !SoftBodyIssue.AnyError(issues, before);
+            return !ValidationIssue.AnyError(issues, before);
         }
     }
 }

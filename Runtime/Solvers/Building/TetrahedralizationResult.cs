@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>One entry per input render vertex: its tetrahedron and barycentric weights; null when the build failed.</summary>
         public EmbeddedVertex[] Embedding;
         /// <summary>Errors and warnings, in the order they were found.</summary>
-        public List<SoftBodyIssue> Issues = new List<SoftBodyIssue>();
+        public List<ValidationIssue> Issues = new List<ValidationIssue>();
         /// <summary>Side of the lattice cells (m).</summary>
         public float CellSize;
         /// <summary>Lattice cells kept (each gives 6 tetrahedra).</summary>
@@ -21,6 +21,6 @@ namespace SoftBodyDynamics.Solvers
         public double TetrahedralVolume;
 
         /// <summary>True when the mesh and the embedding were built (no error).</summary>
-        public bool Succeeded => Mesh != null && Embedding != null && !SoftBodyIssue.AnyError(Issues);
+        public bool Succeeded => Mesh != null && Embedding != null && !ValidationIssue.AnyError(Issues);
     }
 }

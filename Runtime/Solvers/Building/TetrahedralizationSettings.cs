@@ -68,20 +68,20 @@ namespace SoftBodyDynamics.Solvers
         };
 
         /// <summary>Appends an error for every invalid field; returns true when there was none.</summary>
-        public static bool Validate(in TetrahedralizationSettings settings, List<SoftBodyIssue> issues)
+        public static bool Validate(in TetrahedralizationSettings settings, List<ValidationIssue> issues)
         {
             int before = issues.Count;
             if (settings.Resolution < MinResolution || settings.Resolution > MaxResolution)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.TetResolutionOutOfRange, -1, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.TetResolutionOutOfRange, -1, Invariant(
                     $"Resolution is {settings.Resolution}; it must be between {MinResolution} and {MaxResolution} cells along the mesh's longest side (default {DefaultResolution}).")));
             if (settings.MaxNodes <= 0)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MaxNodesInvalid, -1, Invariant(
+                issues.Add(ValidationIssue.Error(TetrahedralMeshIssueCode.MaxNodesInvalid, -1, Invariant(
                     $"MaxNodes is {settings.MaxNodes}; it must be at least 1 (default {DefaultMaxNodes}).")));
             if (!IsFiniteNonNegative(settings.WeldTolerance))
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.WeldToleranceInvalid, -1, Invariant(
                     $"WeldTolerance is {settings.WeldTolerance}; it must be a finite fraction of the mesh diagonal, at least 0 (default {MeshWelding.DefaultRelativeTolerance}).")));
             if (!IsFiniteNonNegative(settings.WeldDistance))
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.WeldToleranceInvalid, -1, Invariant(
+                issues.Add(ValidationIssue.Error(MeshBuildIssueCode.WeldToleranceInvalid, -1, Invariant(
                     $"WeldDistance is {settings.WeldDistance} m; it must be a finite distance of at least 0 m (0 uses WeldTolerance).")));
             return issues.Count == before;
         }

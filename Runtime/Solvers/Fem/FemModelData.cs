@@ -6,7 +6,7 @@ namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
     /// The baked finite-element model of a tetrahedral mesh (managed arrays; built once). <see cref="Create"/> checks
-    /// the mesh and material and reports every problem with a specific <see cref="SoftBodyIssueCode"/>;
+    /// the mesh and material and reports every problem with a specific <see cref="IssueCode"/>;
     /// <see cref="AsModel"/> gives the spans the step reads.
     /// </summary>
     public sealed class FemModelData
@@ -115,24 +115,24 @@ namespace SoftBodyDynamics.Solvers
         /// </para>
         /// </summary>
         public static FemModelData Create(TetrahedralMesh mesh, in ElasticMaterial material, ReadOnlySpan<bool> pinned,
-            List<SoftBodyIssue> issues, FemElementOrder order = FemElementOrder.Linear)
+            List<ValidationIssue> issues, FemElementOrder order = FemElementOrder.Linear)
         {
             int start = issues.Count;
             if (order != FemElementOrder.Linear && order != FemElementOrder.Quadratic)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemElementOrderInvalid, -1,
+                issues.Add(ValidationIssue.Error(FemIssueCode.ElementOrderInvalid, -1,
                     $"Element order {(int)order} is not Linear or Quadratic."));
             if (!material.IsValid)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemMaterialInvalid, -1,
+                issues.Add(ValidationIssue.Error(FemIssueCode.MaterialInvalid, -1,
                     $"The material is invalid (E = {material.YoungsModulus} Pa, ν = {material.PoissonRatio}, ρ = {material.Density} kg/m³, " +
                     $"ζ = {material.DampingRatio}): use E > 0, 0 ≤ ν < 0.5 (0.5 is incompressible, which linear tetrahedra cannot represent), ρ > 0, ζ ≥ 0."));
             if (mesh == null || mesh.Positions == null || mesh.Tetrahedra == null || mesh.NodeCount == 0 || mesh.TetrahedronCount == 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemMeshEmpty, -1, "The tetrahedral mesh has no nodes or no tetrahedra."));
+                issues.Add(ValidationIssue.Error(FemIssueCode.MeshEmpty, -1, "The tetrahedral mesh has no nodes or no tetrahedra."));
                 return null;
             }
             int n = mesh.NodeCount;
             if (pinned.Length != 0 && pinned.Length != n)
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemPinnedCountMismatch, -1,
+                issues.Add(ValidationIssue.Error(FemIssueCode.PinnedCountMismatch, -1,
                     $"The pinned-node list has {pinned.Length} entries but the mesh has {n} nodes."));
 
             var used = new bool[n];
@@ -148,7 +148,7 @@ namespace SoftBodyDynamics.Solvers
                 }
                 if (!valid)
                 {
-                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronNodeInvalid, t,
+                    issues.Add(ValidationIssue.Error(FemIssueCode.TetrahedronNodeInvalid, t,
                         $"Tetrahedron {t} has nodes {nodes}: each must be a distinct node index below {n}."));
                     continue;
                 }
@@ -157,20 +157,20 @@ namespace SoftBodyDynamics.Solvers
                 float3 a = mesh.Positions[nodes.x], b = mesh.Positions[nodes.y], c = mesh.Positions[nodes.z], d = mesh.Positions[nodes.w];
                 float q = Quality(a, b, c, d);
                 if (!(math.abs(q) > DegenerateQuality))
-                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronDegenerate, t,
+                    issues.Add(ValidationIssue.Error(FemIssueCode.TetrahedronDegenerate, t,
                         $"Tetrahedron {t} (nodes {nodes}) has zero volume at rest (quality {q}): its nodes are coplanar or not finite. Remove it or fix the tetrahedralisation."));
                 else if (q < 0f)
-                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.FemTetrahedronInverted, t,
+                    issues.Add(ValidationIssue.Error(FemIssueCode.TetrahedronInverted, t,
                         $"Tetrahedron {t} (nodes {nodes}) is inverted at rest (volume {TetrahedralMesh.SignedVolume(a, b, c, d)} m³): swap two of its nodes."));
                 else if (q < SliverQuality)
-                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemTetrahedronSliver, t,
+                    issues.Add(ValidationIssue.Warning(FemIssueCode.TetrahedronSliver, t,
                         $"Tetrahedron {t} (nodes {nodes}) is a sliver (quality 6√2·V/l_rms³ = {q:G3} < {SliverQuality}): it makes the body stiffer and the explicit stable step shorter."));
             }
             for (int i = 0; i < n; i++)
                 if (!used[i])
-                    issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.FemNodeUnused, i,
+                    issues.Add(ValidationIssue.Warning(FemIssueCode.NodeUnused, i,
                         $"Node {i} belongs to no tetrahedron: it has no mass or stiffness of its own and is held in place."));
-            if (SoftBodyIssue.AnyError(issues, start))
+            if (ValidationIssue.AnyError(issues, start))
                 return null;
 
             bool quadratic = order == FemElementOrder.Quadratic;

@@ -73,12 +73,12 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         /// <param name="referenceFrequency">ω_ref (rad/s); 0 or less = <see cref="DefaultReferenceFrequency"/>.</param>
         public static bool Calibrate(MassSpringNetwork network, TetrahedralMesh mesh, in ElasticMaterial material,
-            in MassSpringBuildSettings settings, float referenceFrequency, List<SoftBodyIssue> issues, out Result result)
+            in MassSpringBuildSettings settings, float referenceFrequency, List<ValidationIssue> issues, out Result result)
         {
             result = default;
             if (!material.IsValid)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringMaterialInvalid, -1,
+                issues.Add(ValidationIssue.Error(MassSpringIssueCode.MaterialInvalid, -1,
                     "The material needs E > 0, 0 ≤ ν < 0.5, ρ > 0 and ζ ≥ 0, all finite."));
                 return false;
             }
@@ -117,7 +117,7 @@ namespace SoftBodyDynamics.Solvers
         public static Result FitFactor(in MassSpringBuildSettings settings)
         {
             TetrahedralMesh box = BoxTetrahedra.Create(new float3(ReferenceCells), new int3(ReferenceCells), new float3(0.5f * ReferenceCells));
-            MassSpringNetwork network = MassSpringNetwork.Build(box, settings, new List<SoftBodyIssue>());
+            MassSpringNetwork network = MassSpringNetwork.Build(box, settings, new List<ValidationIssue>());
             Apply(network, 1.0, 1.0, 0.0);
             var moduli = new double[3];
             double poisson = 0.0;

@@ -77,7 +77,7 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         /// <param name="referenceFrequency">ω_ref (rad/s) at which the damping ratio holds; 0 = the default estimate.</param>
         public static MassSpringModelData FromMesh(TetrahedralMesh mesh, in ElasticMaterial material, in MassSpringBuildSettings settings,
-            List<SoftBodyIssue> issues, out MassSpringCalibration.Result calibration, bool[] pinned = null, float referenceFrequency = 0f)
+            List<ValidationIssue> issues, out MassSpringCalibration.Result calibration, bool[] pinned = null, float referenceFrequency = 0f)
         {
             calibration = default;
             MassSpringNetwork network = MassSpringNetwork.Build(mesh, settings, issues);

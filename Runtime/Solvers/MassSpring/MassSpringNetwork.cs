@@ -24,12 +24,12 @@ namespace SoftBodyDynamics.Solvers
         public int NodeCount;
 
         /// <summary>Springs of <paramref name="mesh"/>; problems go to <paramref name="issues"/>. Null when an error leaves nothing to build.</summary>
-        public static MassSpringNetwork Build(TetrahedralMesh mesh, in MassSpringBuildSettings settings, List<SoftBodyIssue> issues)
+        public static MassSpringNetwork Build(TetrahedralMesh mesh, in MassSpringBuildSettings settings, List<ValidationIssue> issues)
         {
             int start = issues.Count;
             if (mesh == null || mesh.Positions == null || mesh.Tetrahedra == null || mesh.NodeCount == 0 || mesh.TetrahedronCount == 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringEmptyMesh, -1,
+                issues.Add(ValidationIssue.Error(MassSpringIssueCode.EmptyMesh, -1,
                     "The tetrahedral mesh has no nodes or no tetrahedra: there is nothing to connect with springs."));
                 return null;
             }
@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Solvers
             for (int i = 0; i < n; i++)
                 if (!math.all(math.isfinite(mesh.Positions[i])))
                 {
-                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringNonFiniteNode, i,
+                    issues.Add(ValidationIssue.Error(MassSpringIssueCode.NonFiniteNode, i,
                         $"Node {i} has a NaN or infinite position. Fix the mesh that produced it."));
                     return null;
                 }
@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Solvers
                 int4 q = mesh.Tetrahedra[t];
                 if ((uint)q.x >= (uint)n || (uint)q.y >= (uint)n || (uint)q.z >= (uint)n || (uint)q.w >= (uint)n)
                 {
-                    issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringTetrahedronIndexOutOfRange, t,
+                    issues.Add(ValidationIssue.Error(MassSpringIssueCode.TetrahedronIndexOutOfRange, t,
                         $"Tetrahedron {t} refers to node {OutOfRange(q, n)}, but the mesh has {n} nodes."));
                     return null;
                 }
@@ -73,7 +73,7 @@ namespace SoftBodyDynamics.Solvers
                     nodeVolumes[q[k]] += v / 4.0;
             }
             if (degenerate > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.MassSpringDegenerateTetrahedron, firstDegenerate,
+                issues.Add(ValidationIssue.Warning(MassSpringIssueCode.DegenerateTetrahedron, firstDegenerate,
                     $"{degenerate} tetrahedra have zero volume (first: {firstDegenerate}); they add no stiffness and no mass."));
 
             // Structural springs: (edge key, volume) per tetrahedron edge, sorted and merged.
@@ -145,11 +145,11 @@ namespace SoftBodyDynamics.Solvers
                 AddMerged(mesh.Positions, bendKeys, bendVolumes, bendTets, springs, support, null, ref zeroLength, ref firstZero);
             }
             if (zeroLength > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.MassSpringZeroLengthEdge, firstZero,
+                issues.Add(ValidationIssue.Warning(MassSpringIssueCode.ZeroLengthEdge, firstZero,
                     $"{zeroLength} edges have zero rest length (first in tetrahedron {firstZero}: a repeated node or two coincident nodes); their springs are left out."));
             if (springs.Count == 0)
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringNoSprings, -1,
+                issues.Add(ValidationIssue.Error(MassSpringIssueCode.NoSprings, -1,
                     "No spring is left: every edge of the tetrahedra has zero length."));
                 return null;
             }
@@ -183,19 +183,19 @@ namespace SoftBodyDynamics.Solvers
                 network.NodeVolumes[i] = (float)nodeVolumes[i];
             }
             if (isolated > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.MassSpringIsolatedNode, firstIsolated,
+                issues.Add(ValidationIssue.Warning(MassSpringIssueCode.IsolatedNode, firstIsolated,
                     $"{isolated} nodes belong to no tetrahedron of non-zero volume (first: {firstIsolated}); they get the mean mass and no spring holds them."));
             if (!(mean > 0.0))
             {
-                issues.Add(SoftBodyIssue.Error(SoftBodyIssueCode.MassSpringNoSprings, -1,
+                issues.Add(ValidationIssue.Error(MassSpringIssueCode.NoSprings, -1,
                     "Every tetrahedron has zero volume: the body has no mass and no stiffness."));
                 return null;
             }
-            return SoftBodyIssue.AnyError(issues, start) ? null : network;
+            return ValidationIssue.AnyError(issues, start) ? null : network;
         }
 
         /// <summary>False for the second and later copies of a tetrahedron (the same four nodes in any order); warns once.</summary>
-        static bool[] UniqueTetrahedra(TetrahedralMesh mesh, List<SoftBodyIssue> issues)
+        static bool[] UniqueTetrahedra(TetrahedralMesh mesh, List<ValidationIssue> issues)
         {
             int count = mesh.TetrahedronCount;
             var keep = new bool[count];
@@ -223,7 +223,7 @@ namespace SoftBodyDynamics.Solvers
                 }
             }
             if (duplicates > 0)
-                issues.Add(SoftBodyIssue.Warning(SoftBodyIssueCode.MassSpringDuplicateTetrahedron, first,
+                issues.Add(ValidationIssue.Warning(MassSpringIssueCode.DuplicateTetrahedron, first,
                     $"{duplicates} tetrahedra repeat the nodes of another (first: {first}); each copy is merged with its original."));
             return keep;
         }

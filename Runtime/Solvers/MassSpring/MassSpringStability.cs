@@ -69,13 +69,13 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>The warning an inspector shows when substep <paramref name="h"/> (s) exceeds <paramref name="maxStableStep"/> under an explicit integrator; null when it does not.</summary>
-        public static SoftBodyIssue? CheckStep(MassSpringIntegrator integrator, double h, double maxStableStep)
+        public static ValidationIssue? CheckStep(MassSpringIntegrator integrator, double h, double maxStableStep)
         {
             if (integrator != MassSpringIntegrator.SymplecticEuler && integrator != MassSpringIntegrator.Verlet)
                 return null;
             if (h < maxStableStep)
                 return null;
-            return SoftBodyIssue.Warning(SoftBodyIssueCode.MassSpringStepAboveStableLimit, -1,
+            return ValidationIssue.Warning(MassSpringIssueCode.StepAboveStableLimit, -1,
                 $"Absurd stiffness for this step: the substep {h * 1e3:G3} ms exceeds the stable limit {maxStableStep * 1e3:G3} ms of {integrator}. " +
                 $"Use at least {Math.Ceiling(h / maxStableStep * 1.05)}× the substeps, softer springs, or the ImplicitEuler or Xpbd integrator.");
         }

@@ -96,7 +96,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Reference_DampingCoefficientIsThePackagesRayleighBeta()
         {
             MethodBodySetup setup = SquashScene.CreateSetup(2);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FemModelData fem = FemModelData.Create(setup.Mesh, setup.Material, new bool[setup.Mesh.NodeCount], issues);
             MassSpringModelData.FromMesh(setup.Mesh, setup.Material, MassSpringBuildSettings.Default, issues, out MassSpringCalibration.Result springs);
             double beta = SquashTargets.DampingCoefficient(setup.Material, SquashScene.Size);

@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 Material = ElasticMaterial.Jelly,
             };
             MassSpringModelData model = MassSpringModelData.FromMesh(setup.Mesh, setup.Material, MassSpringBuildSettings.Default,
-                new System.Collections.Generic.List<SoftBodyIssue>(), out _);
+                new System.Collections.Generic.List<ValidationIssue>(), out _);
             int n = model.RestPositions.Length;
             MassSpringParameters p = MassSpringParameters.Default;
             var positions = new float3[n];

@@ -13,11 +13,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             return SoftBodyBuilder.Build(vertices, triangles, settings);
         }
 
-        static SoftBodyIssue Single(SoftBodyBuildResult result, SoftBodyIssueCode code)
+        static ValidationIssue Single(SoftBodyBuildResult result, IssueCode code)
         {
-            SoftBodyIssue found = default;
+            ValidationIssue found = default;
             int count = 0;
-            foreach (SoftBodyIssue issue in result.Issues)
+            foreach (ValidationIssue issue in result.Issues)
                 if (issue.Code == code)
                 {
                     found = issue;
@@ -27,10 +27,10 @@ namespace SoftBodyDynamics.Tests.Solvers
             return found;
         }
 
-        static SoftBodyIssue AssertFailsWith(SoftBodyBuildResult result, SoftBodyIssueCode code, int index)
+        static ValidationIssue AssertFailsWith(SoftBodyBuildResult result, IssueCode code, int index)
         {
-            SoftBodyIssue issue = Single(result, code);
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Error));
+            ValidationIssue issue = Single(result, code);
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Error));
             Assert.That(issue.Index, Is.EqualTo(index));
             Assert.That(issue.Message, Is.Not.Empty);
             Assert.That(result.Succeeded, Is.False);
@@ -38,10 +38,10 @@ namespace SoftBodyDynamics.Tests.Solvers
             return issue;
         }
 
-        static SoftBodyIssue AssertWarns(SoftBodyBuildResult result, SoftBodyIssueCode code, int index)
+        static ValidationIssue AssertWarns(SoftBodyBuildResult result, IssueCode code, int index)
         {
-            SoftBodyIssue issue = Single(result, code);
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Warning));
+            ValidationIssue issue = Single(result, code);
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Warning));
             Assert.That(issue.Index, Is.EqualTo(index));
             Assert.That(result.Succeeded, Is.True);
             return issue;
@@ -51,7 +51,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void EmptyMesh_WhenThereAreNoVertices()
         {
             SoftBodyBuildResult result = SoftBodyBuilder.Build(new float3[0], new int[0], SoftBodyBuildSettings.Default);
-            AssertFailsWith(result, SoftBodyIssueCode.EmptyMesh, -1);
+            AssertFailsWith(result, MeshBuildIssueCode.EmptyMesh, -1);
         }
 
         [Test]
@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UnityCube(out float3[] vertices, out _);
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, new int[0], SoftBodyBuildSettings.Default);
-            AssertFailsWith(result, SoftBodyIssueCode.EmptyMesh, -1);
+            AssertFailsWith(result, MeshBuildIssueCode.EmptyMesh, -1);
         }
 
         [Test]
@@ -67,8 +67,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             vertices[17].y = bad;
-            SoftBodyIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
-                SoftBodyIssueCode.NonFiniteVertex, 17);
+            ValidationIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
+                MeshBuildIssueCode.NonFiniteVertex, 17);
             Assert.That(issue.Message, Does.StartWith(float.IsNaN(bad) ? "Vertex 17 has a non-finite position (NaN)." : "Vertex 17 has a non-finite position (infinity)."));
         }
 
@@ -78,8 +78,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             vertices[17].x = float.NaN;
             vertices[5].z = float.PositiveInfinity;
-            SoftBodyIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
-                SoftBodyIssueCode.NonFiniteVertex, 5);
+            ValidationIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
+                MeshBuildIssueCode.NonFiniteVertex, 5);
             Assert.That(issue.Message, Does.Contain("2 vertices"));
         }
 
@@ -88,7 +88,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, new System.ReadOnlySpan<int>(triangles, 0, 35), SoftBodyBuildSettings.Default);
-            AssertFailsWith(result, SoftBodyIssueCode.TriangleCountNotMultipleOfThree, -1);
+            AssertFailsWith(result, MeshBuildIssueCode.TriangleCountNotMultipleOfThree, -1);
         }
 
         [Test]
@@ -97,8 +97,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             triangles[3 * 7 + 1] = badIndex;
             triangles[3 * 9] = badIndex;
-            SoftBodyIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
-                SoftBodyIssueCode.TriangleIndexOutOfRange, 7);
+            ValidationIssue issue = AssertFailsWith(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default),
+                MeshBuildIssueCode.TriangleIndexOutOfRange, 7);
             Assert.That(issue.Message, Does.StartWith($"Triangle 7 refers to vertex {badIndex}, but the mesh has 24 vertices"));
         }
 
@@ -107,7 +107,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var vertices = new[] { new float3(1f, 2f, 3f), new float3(1f, 2f, 3f), new float3(1f, 2f, 3f) };
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, new[] { 0, 1, 2 }, SoftBodyBuildSettings.Default);
-            AssertFailsWith(result, SoftBodyIssueCode.ZeroSize, -1);
+            AssertFailsWith(result, MeshBuildIssueCode.ZeroSize, -1);
         }
 
         [Test]
@@ -115,7 +115,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.WeldDistance = 10f;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.ZeroSize, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.ZeroSize, -1);
         }
 
         [Test]
@@ -125,7 +125,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             int[] triangles = new int[cube.Length + 3];
             cube.CopyTo(triangles, 0);
             new[] { 0, 0, 1 }.CopyTo(triangles, cube.Length);
-            AssertWarns(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default), SoftBodyIssueCode.DegenerateTriangles, 12);
+            AssertWarns(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default), MeshBuildIssueCode.DegenerateTriangles, 12);
         }
 
         [Test]
@@ -140,7 +140,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             cubeTriangles.CopyTo(triangles, 0);
             new[] { 0, 1, cube.Length }.CopyTo(triangles, cubeTriangles.Length);
             int first = FirstTriangleUsingEdge(cubeTriangles, vertices, vertices[0], vertices[1]);
-            AssertWarns(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default), SoftBodyIssueCode.NonManifoldEdges, first);
+            AssertWarns(SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default), MeshBuildIssueCode.NonManifoldEdges, first);
         }
 
         /// <summary>Lowest triangle with corners at both positions (render vertices are split, so positions identify the edge).</summary>
@@ -167,7 +167,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.AddInteriorParticles = true;
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, triangles, settings);
-            AssertWarns(result, SoftBodyIssueCode.NotClosed, 0);
+            AssertWarns(result, MeshBuildIssueCode.NotClosed, 0);
             Assert.That(result.InteriorParticleCount, Is.EqualTo(0));
         }
 
@@ -177,7 +177,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             TestMeshes.OpenQuad(out float3[] vertices, out int[] triangles);
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, triangles, SoftBodyBuildSettings.Default);
             Assert.That(result.Succeeded, Is.True);
-            Assert.That(result.Issues, Has.None.Matches<SoftBodyIssue>(i => i.Code == SoftBodyIssueCode.NotClosed));
+            Assert.That(result.Issues, Has.None.Matches<ValidationIssue>(i => i.Code == MeshBuildIssueCode.NotClosed));
         }
 
         [Test]
@@ -187,7 +187,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.AddInteriorParticles = true;
             SoftBodyBuildResult result = SoftBodyBuilder.Build(vertices, TestMeshes.FlipTriangle(triangles, 0), settings);
-            AssertWarns(result, SoftBodyIssueCode.InconsistentWinding, 0);
+            AssertWarns(result, MeshBuildIssueCode.InconsistentWinding, 0);
             Assert.That(result.InteriorParticleCount, Is.EqualTo(0));
         }
 
@@ -196,7 +196,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.TotalMass = mass;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.TotalMassNotPositive, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.TotalMassNotPositive, -1);
         }
 
         [Test]
@@ -204,7 +204,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.ClusterSize = size;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.ClusterSizeInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.ClusterSizeInvalid, -1);
         }
 
         [Test]
@@ -213,7 +213,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             // 1 m / (1e-7 m / 2) = 2e7 centres per side, above the 2²⁰ limit.
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.ClusterSize = 1e-7f;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.ClusterSizeInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.ClusterSizeInvalid, -1);
         }
 
         [Test]
@@ -222,7 +222,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.AddInteriorParticles = true;
             settings.InteriorSpacing = spacing;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.InteriorSpacingInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.InteriorSpacingInvalid, -1);
         }
 
         [Test]
@@ -232,7 +232,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.AddInteriorParticles = true;
             settings.InteriorSpacing = 1e-3f;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.InteriorSpacingInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.InteriorSpacingInvalid, -1);
         }
 
         [Test]
@@ -240,10 +240,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings relative = SoftBodyBuildSettings.Default;
             relative.WeldTolerance = tolerance;
-            AssertFailsWith(BuildCube(relative), SoftBodyIssueCode.WeldToleranceInvalid, -1);
+            AssertFailsWith(BuildCube(relative), MeshBuildIssueCode.WeldToleranceInvalid, -1);
             SoftBodyBuildSettings absolute = SoftBodyBuildSettings.Default;
             absolute.WeldDistance = tolerance;
-            AssertFailsWith(BuildCube(absolute), SoftBodyIssueCode.WeldToleranceInvalid, -1);
+            AssertFailsWith(BuildCube(absolute), MeshBuildIssueCode.WeldToleranceInvalid, -1);
         }
 
         [Test]
@@ -251,7 +251,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.MaxParticles = max;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.MaxParticlesInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.MaxParticlesInvalid, -1);
         }
 
         [Test]
@@ -259,7 +259,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.MaxParticles = 7;
-            SoftBodyIssue issue = AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.TooManyParticles, -1);
+            ValidationIssue issue = AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.TooManyParticles, -1);
             Assert.That(issue.Message, Does.Contain("8 particles").And.Contain("the limit is 7"));
         }
 
@@ -272,7 +272,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             settings.AddInteriorParticles = true;
             settings.InteriorSpacing = 0.25f;
             settings.MaxParticles = 20;
-            SoftBodyIssue issue = AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.TooManyParticles, -1);
+            ValidationIssue issue = AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.TooManyParticles, -1);
             Assert.That(issue.Message, Does.Contain("at least 21 particles").And.Contain("the limit is 20"));
         }
 
@@ -283,7 +283,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             SoftBodyBuildSettings settings = SoftBodyBuildSettings.Default;
             settings.ClusterSize = 0.5f;
             SoftBodyBuildResult result = BuildCube(settings);
-            AssertWarns(result, SoftBodyIssueCode.WeakClusters, -1);
+            AssertWarns(result, MeshBuildIssueCode.WeakClusters, -1);
             Assert.That(result.ClusterCount, Is.EqualTo(8));
         }
 
@@ -294,8 +294,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             settings.TotalMass = -1f;
             settings.ClusterSize = float.NaN;
             SoftBodyBuildResult result = BuildCube(settings);
-            Single(result, SoftBodyIssueCode.TotalMassNotPositive);
-            Single(result, SoftBodyIssueCode.ClusterSizeInvalid);
+            Single(result, MeshBuildIssueCode.TotalMassNotPositive);
+            Single(result, MeshBuildIssueCode.ClusterSizeInvalid);
             Assert.That(result.Succeeded, Is.False);
         }
     }

@@ -101,8 +101,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(result.SurfaceParticleCount, Is.EqualTo((rings - 1) * segments + 2));
             Assert.That(result.IsClosed, Is.True);
             Assert.That(result.Issues.Count, Is.EqualTo(1));
-            Assert.That(result.Issues[0].Code, Is.EqualTo(SoftBodyIssueCode.DegenerateTriangles));
-            Assert.That(result.Issues[0].Severity, Is.EqualTo(SoftBodyIssueSeverity.Warning));
+            Assert.That(result.Issues[0].Code, Is.EqualTo((IssueCode)MeshBuildIssueCode.DegenerateTriangles));
+            Assert.That(result.Issues[0].Severity, Is.EqualTo(IssueSeverity.Warning));
         }
 
         [Test]

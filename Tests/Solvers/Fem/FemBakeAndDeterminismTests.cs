@@ -11,9 +11,9 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         static readonly ElasticMaterial Jelly = new ElasticMaterial(1e4f, 0.45f, 1000f, 0.1f);
 
-        static List<SoftBodyIssue> Issues(TetrahedralMesh mesh, ElasticMaterial material, out FemModelData data)
+        static List<ValidationIssue> Issues(TetrahedralMesh mesh, ElasticMaterial material, out FemModelData data)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             data = FemModelData.Create(mesh, material, ReadOnlySpan<bool>.Empty, issues);
             return issues;
         }
@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Bake_GoodBox_NoIssues_MassesSumToDensityTimesVolume()
         {
-            List<SoftBodyIssue> issues = Issues(FemTestBodies.Box(2, 3, 1, new float3(0.2f, 0.3f, 0.1f)), Jelly, out FemModelData data);
+            List<ValidationIssue> issues = Issues(FemTestBodies.Box(2, 3, 1, new float3(0.2f, 0.3f, 0.1f)), Jelly, out FemModelData data);
             Assert.That(issues, Is.Empty);
             double mass = 0;
             foreach (float m in data.Masses)
@@ -36,18 +36,18 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Bake_ZeroVolumeTet_IsError()
         {
             var positions = new[] { UnitTet[0], UnitTet[1], UnitTet[2], new float3(1f, 1f, 0f) };
-            List<SoftBodyIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
+            List<ValidationIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
             Assert.That(data, Is.Null);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FemTetrahedronDegenerate && i.Index == 0 && i.Severity == SoftBodyIssueSeverity.Error));
+            Assert.That(issues.Exists(i => i.Code == FemIssueCode.TetrahedronDegenerate && i.Index == 0 && i.Severity == IssueSeverity.Error));
         }
 
         [Test]
         public void Bake_InvertedTet_IsError()
         {
             var mesh = new TetrahedralMesh((float3[])UnitTet.Clone(), new[] { new int4(0, 2, 1, 3) });
-            List<SoftBodyIssue> issues = Issues(mesh, Jelly, out FemModelData data);
+            List<ValidationIssue> issues = Issues(mesh, Jelly, out FemModelData data);
             Assert.That(data, Is.Null);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FemTetrahedronInverted && i.Index == 0 && i.Severity == SoftBodyIssueSeverity.Error));
+            Assert.That(issues.Exists(i => i.Code == FemIssueCode.TetrahedronInverted && i.Index == 0 && i.Severity == IssueSeverity.Error));
         }
 
         [Test]
@@ -55,9 +55,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             // Apex 0.02 above the base: quality ≈ 0.04 < 0.1 but far from flat.
             var positions = new[] { UnitTet[0], UnitTet[1], UnitTet[2], new float3(0.3f, 0.3f, 0.02f) };
-            List<SoftBodyIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
+            List<ValidationIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
             Assert.That(data, Is.Not.Null);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FemTetrahedronSliver && i.Index == 0 && i.Severity == SoftBodyIssueSeverity.Warning));
+            Assert.That(issues.Exists(i => i.Code == FemIssueCode.TetrahedronSliver && i.Index == 0 && i.Severity == IssueSeverity.Warning));
             // The measure is 1 for a regular tetrahedron.
             float regular = FemModelData.Quality(new float3(1f, 1f, 1f), new float3(1f, -1f, -1f), new float3(-1f, 1f, -1f), new float3(-1f, -1f, 1f));
             Assert.That(math.abs(regular), Is.EqualTo(1f).Within(1e-5f));
@@ -67,9 +67,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Bake_UnusedNode_IsWarnedAndPinned()
         {
             var positions = new[] { UnitTet[0], UnitTet[1], UnitTet[2], UnitTet[3], new float3(5f, 5f, 5f) };
-            List<SoftBodyIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
+            List<ValidationIssue> issues = Issues(new TetrahedralMesh(positions, new[] { new int4(0, 1, 2, 3) }), Jelly, out FemModelData data);
             Assert.That(data, Is.Not.Null);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FemNodeUnused && i.Index == 4));
+            Assert.That(issues.Exists(i => i.Code == FemIssueCode.NodeUnused && i.Index == 4));
             Assert.That(data.InverseMasses[4], Is.EqualTo(0f));
             Assert.That(data.Masses[4], Is.GreaterThan(0f));
         }
@@ -78,10 +78,10 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Bake_InvalidMaterial_IsErrorNamingTheRange([Values(0.5f, 0.6f, -0.1f, float.NaN)] float poisson)
         {
             var mesh = new TetrahedralMesh((float3[])UnitTet.Clone(), new[] { new int4(0, 1, 2, 3) });
-            List<SoftBodyIssue> issues = Issues(mesh, new ElasticMaterial(1e4f, poisson, 1000f, 0.1f), out FemModelData data);
+            List<ValidationIssue> issues = Issues(mesh, new ElasticMaterial(1e4f, poisson, 1000f, 0.1f), out FemModelData data);
             Assert.That(data, Is.Null);
-            SoftBodyIssue issue = issues.Find(i => i.Code == SoftBodyIssueCode.FemMaterialInvalid);
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Error));
+            ValidationIssue issue = issues.Find(i => i.Code == FemIssueCode.MaterialInvalid);
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Error));
             StringAssert.Contains("0 ≤ ν < 0.5", issue.Message);
         }
 
@@ -89,11 +89,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void Bake_BadNodeIndexOrPinCount_IsError()
         {
             var mesh = new TetrahedralMesh((float3[])UnitTet.Clone(), new[] { new int4(0, 1, 2, 7) });
-            Assert.That(Issues(mesh, Jelly, out _).Exists(i => i.Code == SoftBodyIssueCode.FemTetrahedronNodeInvalid && i.Index == 0));
-            var issues = new List<SoftBodyIssue>();
+            Assert.That(Issues(mesh, Jelly, out _).Exists(i => i.Code == FemIssueCode.TetrahedronNodeInvalid && i.Index == 0));
+            var issues = new List<ValidationIssue>();
             var good = new TetrahedralMesh((float3[])UnitTet.Clone(), new[] { new int4(0, 1, 2, 3) });
             Assert.That(FemModelData.Create(good, Jelly, new bool[3], issues), Is.Null);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FemPinnedCountMismatch));
+            Assert.That(issues.Exists(i => i.Code == FemIssueCode.PinnedCountMismatch));
         }
 
         static (uint, uint, uint) Bits(float3 v) => (math.asuint(v.x), math.asuint(v.y), math.asuint(v.z));

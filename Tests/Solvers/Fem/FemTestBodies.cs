@@ -18,7 +18,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         public static FemModelData Bake(TetrahedralMesh mesh, ElasticMaterial material, bool[] pinned = null,
             FemElementOrder order = FemElementOrder.Linear)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FemModelData data = FemModelData.Create(mesh, material, pinned ?? Array.Empty<bool>(), issues, order);
             if (data == null)
                 throw new InvalidOperationException("Bake failed: " + string.Join("; ", issues));

@@ -233,14 +233,14 @@ namespace SoftBodyDynamics.Tests.Solvers
         [TestCase(float.NaN, 0f)]
         public void WallShareOutsideZeroToOne_IsABakeWarningAndClamped(float noSlip, float friction)
         {
-            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            var issues = new System.Collections.Generic.List<ValidationIssue>();
             FluidParameters p = FluidParameters.Default;
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
-            Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidWallShareOutOfRange), "defaults");
+            Assert.IsFalse(issues.Exists(i => i.Code == FluidIssueCode.WallShareOutOfRange), "defaults");
             p.DomainNoSlip = new float3(0f, noSlip, 0f);
             p.WallFriction = friction;
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues), "a warning, not an error");
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidWallShareOutOfRange));
+            Assert.IsTrue(issues.Exists(i => i.Code == FluidIssueCode.WallShareOutOfRange));
             FluidParameters s = p.Sanitized();
             Assert.That(s.DomainNoSlip.y, Is.InRange(0f, 1f));
             Assert.That(s.WallFriction, Is.InRange(0f, 1f));
@@ -249,11 +249,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void ShortPeriodicAxisAndUnconvergedViscosity_AreBakeWarnings()
         {
-            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            var issues = new System.Collections.Generic.List<ValidationIssue>();
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.1f, 0.5f, 0.5f));
             p.Periodic = new bool3(true, false, false);
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidPeriodicAxisTooShort));
+            Assert.IsTrue(issues.Exists(i => i.Code == FluidIssueCode.PeriodicAxisTooShort));
 
             // The Poiseuille channel at W/40 with c₀ = 0.3 m/s: substeps of 6.7 ms, a = 15·hν·κ_ν/h² ≈ 29, 134 iterations for 1 %,
             // past the 50 a substep may run. At c₀ = 1 m/s (2 ms, a ≈ 8.6) 42 iterations do, and the step runs them.
@@ -262,16 +262,16 @@ namespace SoftBodyDynamics.Tests.Solvers
             q.SpeedOfSound = 0.3f;
             q = PoiseuilleScenario.Channel(q, 40);
             Assert.IsTrue(FluidValidation.Validate(q, 10000, issues));
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved));
+            Assert.IsTrue(issues.Exists(i => i.Code == FluidIssueCode.ViscosityUnresolved));
             issues.Clear();
             q.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
             Assert.IsTrue(FluidValidation.Validate(q, 10000, issues));
-            Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved));
+            Assert.IsFalse(issues.Exists(i => i.Code == FluidIssueCode.ViscosityUnresolved));
             foreach (FluidPresetKind kind in new[] { FluidPresetKind.Water, FluidPresetKind.Honey, FluidPresetKind.Oil, FluidPresetKind.Slime, FluidPresetKind.Lava })
             {
                 issues.Clear();
                 Assert.IsTrue(FluidValidation.Validate(FluidPresets.Get(kind).Parameters, 1000, issues));
-                Assert.IsFalse(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidViscosityUnresolved), $"{kind} at its defaults");
+                Assert.IsFalse(issues.Exists(i => i.Code == FluidIssueCode.ViscosityUnresolved), $"{kind} at its defaults");
             }
         }
     }

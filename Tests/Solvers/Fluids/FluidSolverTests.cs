@@ -341,9 +341,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.MinSubsteps = p.MaxSubsteps + 10;
             Assert.That(FluidSolver.Substeps(new FluidConstants(p), 0f, 0f, 1f / 60f), Is.EqualTo(new int2(p.MaxSubsteps, p.MaxSubsteps)),
                 "capped, with h = dt / cap: the step still simulates the whole dt");
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(FluidValidation.Validate(p, 1000, issues), Is.True);
-            Assert.That(issues.Exists(i => i.Code == SoftBodyIssueCode.FluidSubstepCapTooLow && i.Message.Contains("fewest substeps")), string.Join("\n", issues));
+            Assert.That(issues.Exists(i => i.Code == FluidIssueCode.SubstepCapTooLow && i.Message.Contains("fewest substeps")), string.Join("\n", issues));
         }
 
         [Test]

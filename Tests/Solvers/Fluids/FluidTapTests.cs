@@ -250,12 +250,12 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Validation_ReportsBadSettingsAndOverBudget()
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FluidTapSettings s = FluidTapSettings.Default;
             s.Lifetime = 10f;
             s.Rate = 500f;
             Assert.IsFalse(FluidValidation.ValidateTap(s, default, k_Spacing, 1000, issues));
-            Assert.AreEqual(SoftBodyIssueCode.FluidTapOverBudget, issues[0].Code, "500/s × 10 s = 5000 > 1000");
+            Assert.AreEqual((IssueCode)FluidEmissionIssueCode.TapOverBudget, issues[0].Code, "500/s × 10 s = 5000 > 1000");
             issues.Clear();
             s.Lifetime = 0f;
             Assert.IsFalse(FluidValidation.ValidateTap(s, default, k_Spacing, 1000, issues), "forever-living particles from an endless tap");
@@ -266,8 +266,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             s.Speed = float.NaN;
             Assert.IsFalse(FluidValidation.ValidateTap(s, new[] { new FluidTapBurst { Cycles = 0 } }, k_Spacing, 1000, issues));
             var codes = issues.ConvertAll(i => i.Code);
-            CollectionAssert.IsSupersetOf(codes, new[] { SoftBodyIssueCode.FluidTapConeInvalid, SoftBodyIssueCode.FluidTapPulseInvalid,
-                SoftBodyIssueCode.FluidTapSpeedInvalid, SoftBodyIssueCode.FluidTapBurstInvalid });
+            CollectionAssert.IsSupersetOf(codes, new IssueCode[] { FluidEmissionIssueCode.TapConeInvalid, FluidEmissionIssueCode.TapPulseInvalid,
+                FluidEmissionIssueCode.TapSpeedInvalid, FluidEmissionIssueCode.TapBurstInvalid });
             issues.Clear();
             FluidParameters p = FluidParameters.Default;
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
@@ -275,7 +275,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             p.SpeedOfSound = 1e5f;
             Assert.IsFalse(FluidValidation.Validate(p, 0, issues));
             codes = issues.ConvertAll(i => i.Code);
-            CollectionAssert.IsSupersetOf(codes, new[] { SoftBodyIssueCode.FluidSpacingInvalid, SoftBodyIssueCode.FluidSpeedOfSoundInvalid, SoftBodyIssueCode.FluidBudgetInvalid });
+            CollectionAssert.IsSupersetOf(codes, new IssueCode[] { FluidIssueCode.SpacingInvalid, FluidIssueCode.SpeedOfSoundInvalid, FluidIssueCode.BudgetInvalid });
         }
 
         [Test]
@@ -285,13 +285,13 @@ namespace SoftBodyDynamics.Tests.Solvers
             // 7 substeps per 1/60 s frame: a cap of 4 warns, the default cap of 32 does not.
             FluidParameters p = FluidParameters.Default;
             p.Solver = FluidSolverKind.PositionBased;
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues));
             Assert.IsEmpty(issues);
             p.MaxSubsteps = 4;
             Assert.IsTrue(FluidValidation.Validate(p, 1000, issues), "a warning, not an error");
             Assert.AreEqual(1, issues.Count);
-            Assert.AreEqual(SoftBodyIssueCode.FluidSubstepCapTooLow, issues[0].Code);
+            Assert.AreEqual((IssueCode)FluidIssueCode.SubstepCapTooLow, issues[0].Code);
             StringAssert.Contains("7 substeps", issues[0].Message);
         }
     }

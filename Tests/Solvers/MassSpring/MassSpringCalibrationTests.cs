@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             const double e = 1e6, strain = 0.01;
             int n = MassSpringCalibration.ReferenceCells;
             TetrahedralMesh box = BoxTetrahedra.Create(new float3(0.1f * n), new int3(n), new float3(0.05f * n));
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringNetwork network = MassSpringNetwork.Build(box, settings, issues);
             MassSpringCalibration.Apply(network, e, fit.Factor, 0.0);
             MassSpringCalibration.UniaxialModulus(box, network.Springs, 0, out _, out double[] u);
@@ -56,7 +56,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(3, 2, 2) * 0.05f, new int3(3, 2, 2), 0.025f * new float3(3, 2, 2));
             foreach (ElasticMaterial material in new[] { ElasticMaterial.Jelly, ElasticMaterial.Rubber, ElasticMaterial.Clay, ElasticMaterial.Flesh })
             {
-                var issues = new List<SoftBodyIssue>();
+                var issues = new List<ValidationIssue>();
                 MassSpringModelData data = MassSpringModelData.FromMesh(mesh, material, MassSpringBuildSettings.Default, issues,
                     out MassSpringCalibration.Result result);
                 Assert.IsNotNull(data, string.Join("\n", issues));
@@ -75,9 +75,9 @@ namespace SoftBodyDynamics.Tests.Solvers
                     mass += m;
                 Assert.That(mass, Is.EqualTo(material.Density * 0.15 * 0.1 * 0.1).Within(1e-5 * mass));
             }
-            var bad = new List<SoftBodyIssue>();
+            var bad = new List<ValidationIssue>();
             Assert.IsNull(MassSpringModelData.FromMesh(mesh, new ElasticMaterial(-1f, 0.3f, 1000f, 0.1f), default, bad, out _));
-            Assert.IsTrue(bad.Exists(i => i.Code == SoftBodyIssueCode.MassSpringMaterialInvalid));
+            Assert.IsTrue(bad.Exists(i => i.Code == MassSpringIssueCode.MaterialInvalid));
         }
 
         [Test]

@@ -16,7 +16,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void Build_UniqueSortedEdgesAndBendingSprings()
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringNetwork network = MassSpringNetwork.Build(TwoTets(), MassSpringBuildSettings.Default, issues);
             Assert.IsEmpty(issues);
             // 6 + 6 edges, 3 shared (the common face 1-2-3): 9 springs, sorted by (A, B), A < B.
@@ -46,11 +46,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             var mesh = new TetrahedralMesh(
                 new[] { new float3(0, 0, 0), new float3(1, 0, 0), new float3(0, 1, 0), new float3(0, 0, 1), new float3(1, 1, 1) },
                 new[] { new int4(0, 1, 2, 3), new int4(1, 0, 3, 2), new int4(1, 2, 3, 3) });
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringNetwork network = MassSpringNetwork.Build(mesh, MassSpringBuildSettings.Default, issues);
             Assert.IsNotNull(network);
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.MassSpringDuplicateTetrahedron && i.Index == 1), string.Join("\n", issues));
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.MassSpringZeroLengthEdge && i.Index == 2), string.Join("\n", issues));
+            Assert.IsTrue(issues.Exists(i => i.Code == MassSpringIssueCode.DuplicateTetrahedron && i.Index == 1), string.Join("\n", issues));
+            Assert.IsTrue(issues.Exists(i => i.Code == MassSpringIssueCode.ZeroLengthEdge && i.Index == 2), string.Join("\n", issues));
             // The duplicate counts once: 6 edges, the first tetrahedron's volume only.
             Assert.AreEqual(6, network.Springs.Length);
             int edge = Array.FindIndex(network.Springs, s => s.A == 0 && s.B == 1);
@@ -58,11 +58,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             foreach (Spring s in network.Springs)
                 Assert.Greater(s.RestLength, 0f);
             // Node 4 belongs to no tetrahedron.
-            Assert.IsTrue(issues.Exists(i => i.Code == SoftBodyIssueCode.MassSpringIsolatedNode && i.Index == 4));
+            Assert.IsTrue(issues.Exists(i => i.Code == MassSpringIssueCode.IsolatedNode && i.Index == 4));
 
-            var bad = new List<SoftBodyIssue>();
+            var bad = new List<ValidationIssue>();
             Assert.IsNull(MassSpringNetwork.Build(new TetrahedralMesh(mesh.Positions, new[] { new int4(0, 1, 2, 9) }), default, bad));
-            Assert.AreEqual(SoftBodyIssueCode.MassSpringTetrahedronIndexOutOfRange, bad[0].Code);
+            Assert.AreEqual((IssueCode)MassSpringIssueCode.TetrahedronIndexOutOfRange, bad[0].Code);
         }
 
         [Test]

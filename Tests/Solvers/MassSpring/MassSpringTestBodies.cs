@@ -70,7 +70,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             bool[] pinned = null)
         {
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(nx, ny, nz) * cell, new int3(nx, ny, nz), 0.5f * cell * new float3(nx, ny, nz));
-            var issues = new System.Collections.Generic.List<SoftBodyIssue>();
+            var issues = new System.Collections.Generic.List<ValidationIssue>();
             return MassSpringModelData.FromMesh(mesh, material, new MassSpringBuildSettings { BendingSprings = bending }, issues, out _, pinned);
         }
     }

@@ -13,15 +13,15 @@ namespace SoftBodyDynamics.Tests.Solvers
             return LatticeTetrahedralizer.Build(vertices, triangles, settings);
         }
 
-        static void AssertFailsWith(TetrahedralizationResult result, SoftBodyIssueCode code, int index)
+        static void AssertFailsWith(TetrahedralizationResult result, IssueCode code, int index)
         {
             int count = 0;
-            foreach (SoftBodyIssue issue in result.Issues)
+            foreach (ValidationIssue issue in result.Issues)
             {
                 if (issue.Code != code)
                     continue;
                 count++;
-                Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Error));
+                Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Error));
                 Assert.That(issue.Index, Is.EqualTo(index));
                 Assert.That(issue.Message, Is.Not.Empty);
             }
@@ -40,7 +40,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             TetrahedralizationResult result = LatticeTetrahedralizer.Build(vertices, open, TetrahedralizationSettings.Default);
             // The last face (triangles 10 and 11) is removed; its four neighbours' triangles are the boundary.
             MeshTopology topology = MeshTopology.Analyse(TestMeshes.WeldAtDefaultTolerance(vertices, open, out int[] welded).Positions, welded);
-            AssertFailsWith(result, SoftBodyIssueCode.VolumeMeshNotClosed, topology.FirstBoundaryTriangle);
+            AssertFailsWith(result, TetrahedralMeshIssueCode.VolumeMeshNotClosed, topology.FirstBoundaryTriangle);
         }
 
         [Test]
@@ -50,7 +50,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             int[] flipped = TestMeshes.FlipTriangle(triangles, 4);
             TetrahedralizationResult result = LatticeTetrahedralizer.Build(vertices, flipped, TetrahedralizationSettings.Default);
             MeshTopology topology = MeshTopology.Analyse(TestMeshes.WeldAtDefaultTolerance(vertices, flipped, out int[] welded).Positions, welded);
-            AssertFailsWith(result, SoftBodyIssueCode.VolumeMeshInconsistentWinding, topology.FirstInconsistentTriangle);
+            AssertFailsWith(result, TetrahedralMeshIssueCode.VolumeMeshInconsistentWinding, topology.FirstInconsistentTriangle);
         }
 
         [Test]
@@ -58,7 +58,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             vertices[5].y = float.NaN;
-            AssertFailsWith(LatticeTetrahedralizer.Build(vertices, triangles, TetrahedralizationSettings.Default), SoftBodyIssueCode.NonFiniteVertex, 5);
+            AssertFailsWith(LatticeTetrahedralizer.Build(vertices, triangles, TetrahedralizationSettings.Default), MeshBuildIssueCode.NonFiniteVertex, 5);
         }
 
         [Test]
@@ -67,7 +67,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             TestMeshes.UnityCube(out float3[] vertices, out int[] triangles);
             for (int v = 0; v < vertices.Length; v++)
                 vertices[v] = new float3(1f, 2f, 3f);
-            AssertFailsWith(LatticeTetrahedralizer.Build(vertices, triangles, TetrahedralizationSettings.Default), SoftBodyIssueCode.ZeroSize, -1);
+            AssertFailsWith(LatticeTetrahedralizer.Build(vertices, triangles, TetrahedralizationSettings.Default), MeshBuildIssueCode.ZeroSize, -1);
         }
 
         [Test]
@@ -76,7 +76,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             TetrahedralizationSettings settings = TetrahedralizationSettings.Default;
             settings.Resolution = 2;
             settings.MaxNodes = 26; // a 2 × 2 × 2 block has 27 nodes
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.TooManyNodes, -1);
+            AssertFailsWith(BuildCube(settings), TetrahedralMeshIssueCode.TooManyNodes, -1);
             settings.MaxNodes = 27;
             Assert.That(BuildCube(settings).Succeeded, Is.True);
         }
@@ -87,7 +87,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TetrahedralizationSettings settings = TetrahedralizationSettings.Default;
             settings.Resolution = resolution;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.TetResolutionOutOfRange, -1);
+            AssertFailsWith(BuildCube(settings), TetrahedralMeshIssueCode.TetResolutionOutOfRange, -1);
             Assert.That(settings.Sanitized().Resolution, Is.EqualTo(resolution < 1 ? 1 : 128));
         }
 
@@ -96,7 +96,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TetrahedralizationSettings settings = TetrahedralizationSettings.Default;
             settings.MaxNodes = 0;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.MaxNodesInvalid, -1);
+            AssertFailsWith(BuildCube(settings), TetrahedralMeshIssueCode.MaxNodesInvalid, -1);
         }
 
         [Test]
@@ -104,7 +104,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TetrahedralizationSettings settings = TetrahedralizationSettings.Default;
             settings.WeldTolerance = -1f;
-            AssertFailsWith(BuildCube(settings), SoftBodyIssueCode.WeldToleranceInvalid, -1);
+            AssertFailsWith(BuildCube(settings), MeshBuildIssueCode.WeldToleranceInvalid, -1);
         }
     }
 }

@@ -151,8 +151,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TestMeshes.UvSphere(12, 24, out float3[] vertices, out int[] triangles);
             TetrahedralizationResult result = Build(vertices, triangles, 8);
-            foreach (SoftBodyIssue issue in result.Issues)
-                Assert.That(issue.Code, Is.Not.EqualTo(SoftBodyIssueCode.TetrahedronSliver).And.Not.EqualTo(SoftBodyIssueCode.UnusedNodes));
+            foreach (ValidationIssue issue in result.Issues)
+                Assert.That(issue.Code, Is.Not.EqualTo((IssueCode)TetrahedralMeshIssueCode.TetrahedronSliver).And.Not.EqualTo((IssueCode)TetrahedralMeshIssueCode.UnusedNodes));
         }
     }
 }

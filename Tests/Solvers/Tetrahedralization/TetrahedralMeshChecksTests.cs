@@ -10,11 +10,11 @@ namespace SoftBodyDynamics.Tests.Solvers
     {
         static TetrahedralMesh Box() => BoxTetrahedra.Create(new float3(1f), new int3(2, 2, 2), float3.zero);
 
-        static SoftBodyIssue Single(List<SoftBodyIssue> issues, SoftBodyIssueCode code)
+        static ValidationIssue Single(List<ValidationIssue> issues, IssueCode code)
         {
-            SoftBodyIssue found = default;
+            ValidationIssue found = default;
             int count = 0;
-            foreach (SoftBodyIssue issue in issues)
+            foreach (ValidationIssue issue in issues)
                 if (issue.Code == code)
                 {
                     found = issue;
@@ -27,7 +27,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void BoxMesh_NoIssues()
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(Box(), issues), Is.True);
             Assert.That(issues, Is.Empty);
         }
@@ -38,11 +38,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             TetrahedralMesh mesh = Box();
             int4 q = mesh.Tetrahedra[7];
             mesh.Tetrahedra[7] = new int4(q.y, q.x, q.z, q.w);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.False);
-            SoftBodyIssue issue = Single(issues, SoftBodyIssueCode.TetrahedronInverted);
+            ValidationIssue issue = Single(issues, TetrahedralMeshIssueCode.TetrahedronInverted);
             Assert.That(issue.Index, Is.EqualTo(7));
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Error));
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Error));
         }
 
         [Test]
@@ -51,9 +51,9 @@ namespace SoftBodyDynamics.Tests.Solvers
             TetrahedralMesh mesh = Box();
             int4 q = mesh.Tetrahedra[3];
             mesh.Tetrahedra[3] = new int4(q.x, q.y, q.y, q.w);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.False);
-            Assert.That(Single(issues, SoftBodyIssueCode.TetrahedronDegenerate).Index, Is.EqualTo(3));
+            Assert.That(Single(issues, TetrahedralMeshIssueCode.TetrahedronDegenerate).Index, Is.EqualTo(3));
         }
 
         [Test]
@@ -61,9 +61,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             var mesh = new TetrahedralMesh(new[] { new float3(0, 0, 0), new float3(1, 0, 0), new float3(0, 1, 0), new float3(0.3f, 0.3f, 0f) },
                 new[] { new int4(0, 1, 2, 3) });
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.False);
-            Assert.That(Single(issues, SoftBodyIssueCode.TetrahedronDegenerate).Index, Is.EqualTo(0));
+            Assert.That(Single(issues, TetrahedralMeshIssueCode.TetrahedronDegenerate).Index, Is.EqualTo(0));
         }
 
         [Test]
@@ -71,9 +71,9 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TetrahedralMesh mesh = Box();
             mesh.Tetrahedra[5] = new int4(0, 1, 2, mesh.NodeCount);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.False);
-            Assert.That(Single(issues, SoftBodyIssueCode.TetrahedronIndexOutOfRange).Index, Is.EqualTo(5));
+            Assert.That(Single(issues, TetrahedralMeshIssueCode.TetrahedronIndexOutOfRange).Index, Is.EqualTo(5));
         }
 
         [Test]
@@ -81,17 +81,17 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             TetrahedralMesh mesh = Box();
             mesh.Positions[4].z = float.NaN;
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.False);
-            Assert.That(Single(issues, SoftBodyIssueCode.NonFiniteNode).Index, Is.EqualTo(4));
+            Assert.That(Single(issues, TetrahedralMeshIssueCode.NonFiniteNode).Index, Is.EqualTo(4));
         }
 
         [Test]
         public void Empty_EmptyTetrahedralMesh()
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(new TetrahedralMesh(new float3[0], new int4[0]), issues), Is.False);
-            Single(issues, SoftBodyIssueCode.EmptyTetrahedralMesh);
+            Single(issues, TetrahedralMeshIssueCode.EmptyTetrahedralMesh);
         }
 
         [Test]
@@ -101,11 +101,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             var positions = new float3[box.NodeCount + 1];
             box.Positions.CopyTo(positions, 0);
             positions[box.NodeCount] = new float3(5f);
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(new TetrahedralMesh(positions, box.Tetrahedra), issues), Is.True);
-            SoftBodyIssue issue = Single(issues, SoftBodyIssueCode.UnusedNodes);
+            ValidationIssue issue = Single(issues, TetrahedralMeshIssueCode.UnusedNodes);
             Assert.That(issue.Index, Is.EqualTo(box.NodeCount));
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Warning));
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Warning));
         }
 
         /// <summary>Quality 1 for the regular tetrahedron, 6√2·(1/6)/(10/6)^{3/2} ≈ 0.657 for a Kuhn cube tetrahedron.</summary>
@@ -130,11 +130,11 @@ namespace SoftBodyDynamics.Tests.Solvers
             double q1 = TetrahedralMeshChecks.Quality(mesh.Positions[0], mesh.Positions[2], mesh.Positions[1], mesh.Positions[4]);
             Assert.That(q0, Is.GreaterThan(TetrahedralMeshChecks.SliverQuality));
             Assert.That(q1, Is.GreaterThan(0.0).And.LessThan(TetrahedralMeshChecks.SliverQuality));
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             Assert.That(TetrahedralMeshChecks.Check(mesh, issues), Is.True);
-            SoftBodyIssue issue = Single(issues, SoftBodyIssueCode.TetrahedronSliver);
+            ValidationIssue issue = Single(issues, TetrahedralMeshIssueCode.TetrahedronSliver);
             Assert.That(issue.Index, Is.EqualTo(1));
-            Assert.That(issue.Severity, Is.EqualTo(SoftBodyIssueSeverity.Warning));
+            Assert.That(issue.Severity, Is.EqualTo(IssueSeverity.Warning));
         }
     }
 }

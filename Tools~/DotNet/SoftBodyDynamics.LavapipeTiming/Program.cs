@@ -100,7 +100,7 @@ static class Program
     {
         using var shader = new LavapipeComputeShader(device, LavapipeSoftBodyCommands.ComputePath());
         using var g = new LavapipeSoftBodyCommands(device, shader);
-        var issues = new List<SoftBodyIssue>();
+        var issues = new List<ValidationIssue>();
         float edge = 0.02f * cells;
         TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(edge), new int3(cells), new float3(0.5f * edge));
         MassSpringModelData body = MassSpringModelData.FromMesh(mesh, ElasticMaterial.Jelly, new MassSpringBuildSettings(), issues, out _, null);

@@ -41,7 +41,7 @@ namespace SoftBodyDynamics.Tests.Compute
         [Test]
         public void XpbdSubstep_MatchesTheCpuProjection()
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             TetrahedralMesh mesh = BoxTetrahedra.Create(new float3(0.4f, 0.3f, 0.2f), new int3(8, 6, 4), new float3(0.2f, 0.15f, 0.1f));
             MassSpringModelData body = MassSpringModelData.FromMesh(mesh, ElasticMaterial.Jelly, new MassSpringBuildSettings(), issues, out _, null);
             int n = body.ParticleCount, m = body.SpringCount;

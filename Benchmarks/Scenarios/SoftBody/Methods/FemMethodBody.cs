@@ -37,7 +37,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             int cgIterations = 0, float cgTolerance = 0f, int iterations = 0, FemElementOrder order = FemElementOrder.Linear,
             bool restFactor = false)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             m_Model = FemModelData.Create(setup.Mesh, setup.Material, setup.Pinned ?? new bool[setup.Mesh.NodeCount], issues, order)
                       ?? throw new InvalidOperationException("FEM bake failed: " + (issues.Count > 0 ? issues[0].Message : "?"));
             FemParameters p = FemParameters.Default;

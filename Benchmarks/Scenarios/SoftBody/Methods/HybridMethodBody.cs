@@ -33,7 +33,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             ElasticMaterial half = setup.Material;
             half.YoungsModulus *= 0.5f;
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             m_Springs = MassSpringModelData.FromMesh(setup.Mesh, half, MassSpringBuildSettings.Default, issues, out _, setup.Pinned)
                         ?? throw new InvalidOperationException("Mass-spring bake failed");
             ClusterSet clusters = ClusterBuilder.Build(setup.Mesh.Positions, ShapeMatchingMethodBody.ClusterCells * cellSize * 1.001f);

@@ -30,7 +30,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="cgIterations">Implicit Euler: cap on CG iterations per substep; 0 = the solver's default.</param>
         public MassSpringMethodBody(MethodBodySetup setup, MassSpringIntegrator integrator, int substeps, int cgIterations = 0)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             m_Model = MassSpringModelData.FromMesh(setup.Mesh, setup.Material, MassSpringBuildSettings.Default, issues,
                 out MassSpringCalibration.Result calibration, setup.Pinned)
                 ?? throw new InvalidOperationException("Mass-spring bake failed: " + (issues.Count > 0 ? issues[0].Message : "?"));

@@ -126,7 +126,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static double ComputeMassSpringStep(MethodBodySetup setup)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             MassSpringModelData data = MassSpringModelData.FromMesh(setup.Mesh, setup.Material, MassSpringBuildSettings.Default, issues,
                 out _, setup.Pinned) ?? throw new InvalidOperationException("Mass-spring bake failed");
             return MassSpringStability.MaxStableStep(data.AsModel());
@@ -137,7 +137,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         static double ComputeFemStep(MethodBodySetup setup)
         {
-            var issues = new List<SoftBodyIssue>();
+            var issues = new List<ValidationIssue>();
             FemModelData data = FemModelData.Create(setup.Mesh, setup.Material, setup.Pinned, issues)
                                 ?? throw new InvalidOperationException("FEM bake failed");
             SoftBodyDynamics.Solvers.FemModel model = data.AsModel();
