@@ -38,7 +38,7 @@ namespace SoftBodyDynamics.Editor
             root.Add(m_Readout);
             foreach (string field in s_Fields)
                 root.Add(new PropertyField(serializedObject.FindProperty(field)));
-            SoftBodyInspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
+            InspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
             Refresh();
             return root;
         }
@@ -57,7 +57,7 @@ namespace SoftBodyDynamics.Editor
                 string prefix = several ? tap.name + ": " : "";
                 if (tap.fluid == null)
                 {
-                    m_Readout.Add(SoftBodyInspectorSupport.IssueBox(prefix + "Assign the Fluid this tap pours into.", IssueSeverity.Error));
+                    m_Readout.Add(InspectorSupport.IssueBox(prefix + "Assign the Fluid this tap pours into.", IssueSeverity.Error));
                     continue;
                 }
                 double alive = tap.SteadyStateAlive();
@@ -68,7 +68,7 @@ namespace SoftBodyDynamics.Editor
                 var issues = new List<ValidationIssue>();
                 FluidValidation.ValidateTap(tap.ToSettings(), tap.bursts ?? new FluidTapBurst[0], tap.fluid.particleSpacing, tap.fluid.particleBudget, issues);
                 foreach (ValidationIssue issue in issues)
-                    m_Readout.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
+                    m_Readout.Add(InspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
         }
     }

@@ -153,7 +153,7 @@ namespace SoftBodyDynamics.Editor
             GameObject floor = CreateVisual("Floor", PrimitiveType.Plane, material, scene);
             floor.transform.position = position;
             floor.transform.localScale = new Vector3(2.4f, 1f, 2.4f);
-            floor.AddComponent<SoftBodyColliderAuthoring>().shape = ColliderShapeType.Plane;
+            floor.AddComponent<ParticleColliderAuthoring>().shape = ColliderShapeType.Plane;
         }
 
         /// <summary>A primitive with its MeshFilter and MeshRenderer only (no physics collider), in <paramref name="scene"/>.</summary>

@@ -83,7 +83,7 @@ namespace SoftBodyDynamics.Editor
             m_ShapeMatchingOnly.AddRange(AddFields(limits, nameof(SoftBodyAuthoring.rotationIterations)));
             root.Add(limits);
 
-            SoftBodyInspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
+            InspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
             Refresh();
             return root;
         }
@@ -178,7 +178,7 @@ namespace SoftBodyDynamics.Editor
                     counts.Append('\n');
                 counts.Append(prefix).Append(report.Method == SoftBodyMethod.ShapeMatching ? Describe(report.Result) : Describe(report.Tetrahedral));
                 foreach (ValidationIssue issue in report.Issues)
-                    m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
+                    m_Issues.Add(InspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             m_Counts.text = counts.ToString();
             ShowMethodFields(shapeMatching, massSpring, fem);

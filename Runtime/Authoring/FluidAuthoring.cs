@@ -108,7 +108,7 @@ namespace SoftBodyDynamics.Authoring
         [Range(1, 256)]
         public int maxSubsteps = 32;
 
-        [Tooltip("Fewest substeps per fixed step (0–256; 0 = the CFL limit alone). More substeps than the CFL limit asks for buy a smaller step; a Soft Body World raises this to its minimum.")]
+        [Tooltip("Fewest substeps per fixed step (0–256; 0 = the CFL limit alone). More substeps than the CFL limit asks for buy a smaller step; a Particle World raises this to its minimum.")]
         [Range(0, 256)]
         public int minSubsteps = 0;
 

@@ -27,18 +27,18 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>The drain in world space.</summary>
         public FluidDrain ToDrain()
         {
-            var definition = new SoftBodyColliderDefinition
+            var definition = new ParticleColliderDefinition
             {
                 Shape = shape == ColliderShapeType.Sphere ? ColliderShapeType.Sphere : ColliderShapeType.Box,
                 Center = Unity.Mathematics.float3.zero,
                 Size = UnityMathConversions.ToFloat3(size),
                 Radius = radius,
                 Height = 2f * radius,
-                Direction = SoftBodyCapsuleAxis.Y,
+                Direction = ColliderCapsuleAxis.Y,
             };
             return new FluidDrain
             {
-                Shape = SoftBodyColliderWorldShape.Compute(definition, UnityMathConversions.ToFloat3(transform.position),
+                Shape = ParticleColliderWorldShape.Compute(definition, UnityMathConversions.ToFloat3(transform.position),
                     UnityMathConversions.ToQuaternion(transform.rotation), UnityMathConversions.ToFloat3(transform.lossyScale)),
             };
         }

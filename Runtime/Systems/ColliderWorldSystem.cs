@@ -6,7 +6,7 @@ namespace SoftBodyDynamics
 {
     /// <summary>
     /// Builds the step's collider world first in <see cref="ParticleSimulationSystemGroup"/>: every
-    /// <see cref="SoftBodyCollider"/>, in query order, copied into the <see cref="ColliderWorldShape"/> buffer of a
+    /// <see cref="ParticleCollider"/>, in query order, copied into the <see cref="ColliderWorldShape"/> buffer of a
     /// singleton entity it creates. Taking the buffer for writing completes the jobs of the previous step that still read
     /// it. A world whose colliders are all gone gets an empty buffer once, then the system does nothing. It updates only
     /// while something reads the collider world: a particle body of any method or a fluid.
@@ -20,7 +20,7 @@ namespace SoftBodyDynamics
         [BurstCompile]
         public void OnCreate(ref SystemState state)
         {
-            m_Colliders = SystemAPI.QueryBuilder().WithAll<SoftBodyCollider>().Build();
+            m_Colliders = SystemAPI.QueryBuilder().WithAll<ParticleCollider>().Build();
             ColliderWorldReaders.Require(ref state);
             Entity world = state.EntityManager.CreateEntity();
             state.EntityManager.AddBuffer<ColliderWorldShape>(world);
@@ -31,7 +31,7 @@ namespace SoftBodyDynamics
         {
             if (m_Colliders.IsEmpty && SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Length == 0)
                 return;
-            NativeArray<SoftBodyCollider> colliders = m_Colliders.ToComponentDataArray<SoftBodyCollider>(Allocator.Temp);
+            NativeArray<ParticleCollider> colliders = m_Colliders.ToComponentDataArray<ParticleCollider>(Allocator.Temp);
             DynamicBuffer<ColliderWorldShape> shapes = SystemAPI.GetSingletonBuffer<ColliderWorldShape>();
             shapes.ResizeUninitialized(colliders.Length);
             for (int i = 0; i < colliders.Length; i++)

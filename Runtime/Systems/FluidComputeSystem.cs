@@ -61,7 +61,7 @@ namespace SoftBodyDynamics
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
             var inputs = FluidFrameInputs.Gather(SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true), m_Taps, m_Drains);
             ReleaseRemoved(m);
-            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+            bool hasWorld = SystemAPI.TryGetSingleton(out ParticleWorldSettings world);
             for (int f = 0; f < fluids.Length; f++)
             {
                 Entity fluid = fluids[f];

@@ -56,7 +56,7 @@ namespace SoftBodyDynamics
             NativeArray<FluidDrainVolume> drains = inputs.Drains;
             NativeArray<Entity> fluids = m_Fluids.ToEntityArray(Allocator.Temp);
 
-            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+            bool hasWorld = SystemAPI.TryGetSingleton(out ParticleWorldSettings world);
 
             // Entities storage first, on the main thread: it changes the world's structure.
             for (int f = 0; f < fluids.Length; f++)

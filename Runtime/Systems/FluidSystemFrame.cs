@@ -113,8 +113,8 @@ namespace SoftBodyDynamics
     /// </summary>
     static class FluidSystemFrame
     {
-        /// <summary><paramref name="settings"/> as the world steps the fluid: its gravity and minimum substeps when a <see cref="SoftBodyWorldSettings"/> exists.</summary>
-        public static FluidSettings InWorld(FluidSettings settings, bool hasWorld, in SoftBodyWorldSettings world)
+        /// <summary><paramref name="settings"/> as the world steps the fluid: its gravity and minimum substeps when a <see cref="ParticleWorldSettings"/> exists.</summary>
+        public static FluidSettings InWorld(FluidSettings settings, bool hasWorld, in ParticleWorldSettings world)
         {
             if (hasWorld)
                 settings.Parameters = world.Apply(settings.Parameters);

@@ -15,7 +15,7 @@ namespace SoftBodyDynamics
     /// sized and the rest shape placed at their <see cref="LocalTransform"/> (<see cref="MassSpringSolver.Initialize"/>);
     /// pending <see cref="SoftBodyImpulse"/>s are applied; then <see cref="MassSpringSolver.Step"/>, the same function
     /// the .NET tests call, advances every body against the step's collider world (<see cref="ColliderWorldShape"/>). A
-    /// <see cref="SoftBodyWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
+    /// <see cref="ParticleWorldSettings"/> singleton replaces each body's gravity and raises its substeps, as for shape
     /// matching. The entity's <see cref="LocalTransform"/> follows the body and <see cref="ParticleBodyState"/> holds the
     /// report; a NaN-guard reset logs a warning naming the entity and the particle.
     /// </summary>
@@ -33,7 +33,7 @@ namespace SoftBodyDynamics
         [BurstCompile]
         public void OnUpdate(ref SystemState state)
         {
-            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+            bool hasWorld = SystemAPI.TryGetSingleton(out ParticleWorldSettings world);
             NativeArray<ColliderShape> colliders = SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Reinterpret<ColliderShape>().AsNativeArray();
             new InitializeJob().ScheduleParallel();
             new ApplyImpulseJob().ScheduleParallel();
@@ -91,10 +91,10 @@ namespace SoftBodyDynamics
             [ReadOnly] public NativeArray<ColliderShape> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
-            /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
+            /// <summary>True when a <see cref="ParticleWorldSettings"/> singleton exists.</summary>
             public bool HasWorldSettings;
             /// <summary>The world's settings (when <see cref="HasWorldSettings"/>).</summary>
-            public SoftBodyWorldSettings World;
+            public ParticleWorldSettings World;
 
             void Execute(Entity entity, in MassSpringShape shape, in MassSpringSettings settings, ref ParticleBodyState body,
                 ref LocalTransform transform, DynamicBuffer<SoftBodyPosition> positions, DynamicBuffer<SoftBodyVelocity> velocities)

@@ -11,8 +11,8 @@ namespace SoftBodyDynamics
     /// <summary>
     /// Steps every initialized soft body once per fixed step with <see cref="ShapeMatchingSolver.Step"/>, the
     /// same function the .NET tests call, against the step's collider world (<see cref="ColliderWorldShape"/>, built once per step). With a
-    /// <see cref="SoftBodyWorldSettings"/> singleton, every body uses the world's gravity and at least its substeps
-    /// (<see cref="SoftBodyWorldSettings.Apply"/>). One body per job
+    /// <see cref="ParticleWorldSettings"/> singleton, every body uses the world's gravity and at least its substeps
+    /// (<see cref="ParticleWorldSettings.Apply"/>). One body per job
     /// index and no reductions across bodies, so results do not depend on scheduling. After the step the
     /// entity's <see cref="LocalTransform"/> follows the body (<see cref="SoftBodyPlacement.ToLocalTransform"/>),
     /// <see cref="ParticleBodyState"/> holds the shared report and <see cref="ShapeMatchingDiagnostics"/> the shape-matching
@@ -34,7 +34,7 @@ namespace SoftBodyDynamics
         public void OnUpdate(ref SystemState state)
         {
             float dt = SystemAPI.Time.DeltaTime;
-            bool hasWorld = SystemAPI.TryGetSingleton(out SoftBodyWorldSettings world);
+            bool hasWorld = SystemAPI.TryGetSingleton(out ParticleWorldSettings world);
             NativeArray<ColliderShape> colliders = SystemAPI.GetSingletonBuffer<ColliderWorldShape>(true).Reinterpret<ColliderShape>().AsNativeArray();
 
             new ApplyImpulseJob().ScheduleParallel();
@@ -70,10 +70,10 @@ namespace SoftBodyDynamics
             [ReadOnly] public NativeArray<ColliderShape> Colliders;
             /// <summary>Fixed time step (s).</summary>
             public float DeltaTime;
-            /// <summary>True when a <see cref="SoftBodyWorldSettings"/> singleton exists.</summary>
+            /// <summary>True when a <see cref="ParticleWorldSettings"/> singleton exists.</summary>
             public bool HasWorldSettings;
             /// <summary>The world's settings (when <see cref="HasWorldSettings"/>).</summary>
-            public SoftBodyWorldSettings World;
+            public ParticleWorldSettings World;
             /// <summary>Optional per-instance quadratic inverses; each job index touches only its own entity's buffer.</summary>
             [NativeDisableParallelForRestriction] public BufferLookup<ShapeMatchingQuadraticInverse> QuadraticInverse;
 

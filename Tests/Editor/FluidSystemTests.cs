@@ -81,7 +81,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Update(2);
             int alone = m_Manager.GetComponentData<FluidRuntime>(fluid).LastFrame.Step.Substeps;
             Entity world = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(world, new SoftBodyWorldSettings { Gravity = float3.zero, MinSubsteps = alone + 3 });
+            m_Manager.AddComponentData(world, new ParticleWorldSettings { Gravity = float3.zero, MinSubsteps = alone + 3 });
             Update(10);
             Assert.That(m_Manager.GetComponentData<FluidRuntime>(fluid).LastFrame.Step.Substeps, Is.EqualTo(alone + 3), "the world's minimum substeps");
             // Without gravity the poured particles keep the tap's 1 m/s downward, give or take the pressure between them.

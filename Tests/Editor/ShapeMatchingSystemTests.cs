@@ -206,7 +206,7 @@ namespace SoftBodyDynamics.Tests.Editor
             parameters.MaxSubstepPhase = 1000f; // exactly the requested substeps
             Entity body = CreateBody(new float3(0f, 5f, 0f), quaternion.identity, parameters);
             Entity world = m_Manager.CreateEntity();
-            var settings = new SoftBodyWorldSettings { Gravity = new float3(1f, 0f, 0f), MinSubsteps = 3 };
+            var settings = new ParticleWorldSettings { Gravity = new float3(1f, 0f, 0f), MinSubsteps = 3 };
             m_Manager.AddComponentData(world, settings);
             float3 start = new float3(0f, 5f, 0f) + m_Model.BodyRest.RestCenter;
 
@@ -225,7 +225,7 @@ namespace SoftBodyDynamics.Tests.Editor
         public void Body_LandsOnAGroundCollider_AndStaysAboveIt()
         {
             Entity ground = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(ground, new SoftBodyCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
+            m_Manager.AddComponentData(ground, new ParticleCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
             Entity body = CreateBody(new float3(0f, 0.5f, 0f));
 
             Update(180);

@@ -43,11 +43,11 @@ namespace SoftBodyDynamics.Tests.Editor
             return body;
         }
 
-        SoftBodyColliderAuthoring CreateCollider(ColliderShapeType shape)
+        ParticleColliderAuthoring CreateCollider(ColliderShapeType shape)
         {
             var gameObject = new GameObject("Collider Under Test");
             m_Created.Add(gameObject);
-            SoftBodyColliderAuthoring collider = gameObject.AddComponent<SoftBodyColliderAuthoring>();
+            ParticleColliderAuthoring collider = gameObject.AddComponent<ParticleColliderAuthoring>();
             collider.shape = shape;
             return collider;
         }
@@ -301,48 +301,48 @@ namespace SoftBodyDynamics.Tests.Editor
         [Test]
         public void ColliderValidation_DefaultBox_HasNoIssue()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
 
-            Assert.That(SoftBodyColliderValidation.Validate(collider), Is.Empty);
+            Assert.That(ParticleColliderValidation.Validate(collider), Is.Empty);
         }
 
         [Test]
         public void ColliderValidation_BoxWithZeroEdge_ReportsSizeNotPositive()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
             collider.size = new Vector3(1f, 0f, 1f);
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+            Assert.That(Codes(ParticleColliderValidation.Validate(collider), IssueSeverity.Error),
                 Does.Contain((IssueCode)ColliderIssueCode.SizeNotPositive));
         }
 
         [Test]
         public void ColliderValidation_NegativeRadius_ReportsSizeNotPositive()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Capsule);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Capsule);
             collider.radius = -0.1f;
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+            Assert.That(Codes(ParticleColliderValidation.Validate(collider), IssueSeverity.Error),
                 Does.Contain((IssueCode)ColliderIssueCode.SizeNotPositive));
         }
 
         [Test]
         public void ColliderValidation_NaNRadius_ReportsSizeNotFinite()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
             collider.radius = float.NaN;
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+            Assert.That(Codes(ParticleColliderValidation.Validate(collider), IssueSeverity.Error),
                 Does.Contain((IssueCode)ColliderIssueCode.SizeNotFinite));
         }
 
         [Test]
         public void ColliderValidation_NonUniformlyScaledSphere_Warns()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Sphere);
             collider.transform.localScale = new Vector3(1f, 2f, 1f);
 
-            List<ValidationIssue> issues = SoftBodyColliderValidation.Validate(collider);
+            List<ValidationIssue> issues = ParticleColliderValidation.Validate(collider);
 
             Assert.That(Codes(issues, IssueSeverity.Warning), Does.Contain((IssueCode)ColliderIssueCode.NonUniformScale));
             Assert.That(ValidationIssue.AnyError(issues), Is.False);
@@ -351,19 +351,19 @@ namespace SoftBodyDynamics.Tests.Editor
         [Test]
         public void ColliderValidation_CapsuleStretchedAlongItsAxis_DoesNotWarn()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Capsule);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Capsule);
             collider.transform.localScale = new Vector3(1f, 3f, 1f);
 
-            Assert.That(SoftBodyColliderValidation.Validate(collider), Is.Empty);
+            Assert.That(ParticleColliderValidation.Validate(collider), Is.Empty);
         }
 
         [Test]
         public void ColliderValidation_ZeroScaledBox_ReportsScaleZero()
         {
-            SoftBodyColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
+            ParticleColliderAuthoring collider = CreateCollider(ColliderShapeType.Box);
             collider.transform.localScale = new Vector3(1f, 0f, 1f);
 
-            Assert.That(Codes(SoftBodyColliderValidation.Validate(collider), IssueSeverity.Error),
+            Assert.That(Codes(ParticleColliderValidation.Validate(collider), IssueSeverity.Error),
                 Does.Contain((IssueCode)ColliderIssueCode.ScaleZero));
         }
 
@@ -377,13 +377,13 @@ namespace SoftBodyDynamics.Tests.Editor
         [Test]
         public void WorldShape_ScaledRotatedBox_HasWorldCentreAndHalfExtents()
         {
-            var box = new SoftBodyColliderDefinition
+            var box = new ParticleColliderDefinition
             {
                 Shape = ColliderShapeType.Box, Center = new float3(1f, 0f, 0f), Size = new float3(2f, 4f, 6f),
             };
             quaternion quarterTurnY = QuarterTurn(new float3(0f, 1f, 0f));
 
-            ColliderShape shape = SoftBodyColliderWorldShape.Compute(box, new float3(0f, 1f, 0f), quarterTurnY, new float3(2f, 1f, 1f));
+            ColliderShape shape = ParticleColliderWorldShape.Compute(box, new float3(0f, 1f, 0f), quarterTurnY, new float3(2f, 1f, 1f));
 
             Assert.That(shape.Type, Is.EqualTo(ColliderShapeType.Box));
             Assert.That(math.distance(shape.Center, new float3(0f, 1f, -2f)), Is.LessThan(1e-5f));
@@ -393,12 +393,12 @@ namespace SoftBodyDynamics.Tests.Editor
         [Test]
         public void WorldShape_CapsuleAlongY_EndsAtTheCapCentres()
         {
-            var capsule = new SoftBodyColliderDefinition
+            var capsule = new ParticleColliderDefinition
             {
-                Shape = ColliderShapeType.Capsule, Radius = 0.5f, Height = 3f, Direction = SoftBodyCapsuleAxis.Y,
+                Shape = ColliderShapeType.Capsule, Radius = 0.5f, Height = 3f, Direction = ColliderCapsuleAxis.Y,
             };
 
-            ColliderShape shape = SoftBodyColliderWorldShape.Compute(capsule, float3.zero, quaternion.identity, new float3(1f, 2f, 1f));
+            ColliderShape shape = ParticleColliderWorldShape.Compute(capsule, float3.zero, quaternion.identity, new float3(1f, 2f, 1f));
 
             Assert.That(shape.Radius, Is.EqualTo(0.5f));
             // Height 3 m scaled by 2 is 6 m tip to tip; the segment stops one radius short of each tip.
@@ -409,10 +409,10 @@ namespace SoftBodyDynamics.Tests.Editor
         [Test]
         public void WorldShape_Plane_UsesTheUpAxisAsNormal()
         {
-            var plane = new SoftBodyColliderDefinition { Shape = ColliderShapeType.Plane };
+            var plane = new ParticleColliderDefinition { Shape = ColliderShapeType.Plane };
             quaternion tiltX = QuarterTurn(new float3(1f, 0f, 0f));
 
-            ColliderShape shape = SoftBodyColliderWorldShape.Compute(plane, new float3(0f, 2f, 0f), tiltX, new float3(5f, 5f, 5f));
+            ColliderShape shape = ParticleColliderWorldShape.Compute(plane, new float3(0f, 2f, 0f), tiltX, new float3(5f, 5f, 5f));
 
             Assert.That(math.distance(shape.Center, new float3(0f, 2f, 0f)), Is.LessThan(1e-6f));
             Assert.That(math.distance(shape.Axis, math.mul(tiltX, new float3(0f, 1f, 0f))), Is.LessThan(1e-6f));

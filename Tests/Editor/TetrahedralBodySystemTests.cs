@@ -115,7 +115,7 @@ namespace SoftBodyDynamics.Tests.Editor
         {
             Assert.That(ShouldRun(m_MassSpring) || ShouldRun(m_Fem) || ShouldRun(m_ShapeMatching), Is.False, "an empty world runs none");
             Entity collider = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(collider, new SoftBodyCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
+            m_Manager.AddComponentData(collider, new ParticleCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
             Assert.That(ShouldRun(m_ColliderWorld), Is.False, "colliders alone: nothing reads the collider world, so it is not built");
 
             Entity shapeMatchingOnly = m_Manager.CreateEntity();
@@ -188,7 +188,7 @@ namespace SoftBodyDynamics.Tests.Editor
             Entity spring = CreateMassSpringBody(new float3(0f, 5f, 0f), MassSpringParameters.Default);
             Entity fem = CreateFemBody(new float3(3f, 5f, 0f), FemParameters.Default);
             Entity world = m_Manager.CreateEntity();
-            m_Manager.AddComponentData(world, new SoftBodyWorldSettings { Gravity = float3.zero, MinSubsteps = 1 });
+            m_Manager.AddComponentData(world, new ParticleWorldSettings { Gravity = float3.zero, MinSubsteps = 1 });
 
             Update(30);
 

@@ -70,7 +70,7 @@ namespace SoftBodyDynamics.Tests.Runtime
         Entity Floor()
         {
             Entity floor = Track(m_Manager.CreateEntity());
-            m_Manager.AddComponentData(floor, new SoftBodyCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
+            m_Manager.AddComponentData(floor, new ParticleCollider { Shape = ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) });
             return floor;
         }
 

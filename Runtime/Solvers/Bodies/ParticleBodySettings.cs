@@ -6,7 +6,7 @@ namespace SoftBodyDynamics.Solvers
     /// The settings every particle body has, whatever its method: gravity, substeps, contacts, sleep and the guard's speed
     /// limit. Each method's parameters nest one (<see cref="ShapeMatchingParameters.Body"/>,
     /// <see cref="MassSpringParameters.Body"/>, <see cref="FemParameters.Body"/>); the world's settings (a
-    /// <c>SoftBodyWorldSettings</c> singleton) replace its gravity and raise its substeps. Units are in each doc comment.
+    /// <c>ParticleWorldSettings</c> singleton) replace its gravity and raise its substeps. Units are in each doc comment.
     /// </summary>
     public struct ParticleBodySettings
     {

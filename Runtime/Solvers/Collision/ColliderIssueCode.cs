@@ -1,7 +1,7 @@
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// Problems of a collider's shape, size or transform (<c>SoftBodyColliderValidation</c>, at authoring and bake time).
+    /// Problems of a collider's shape, size or transform (<c>ParticleColliderValidation</c>, at authoring and bake time).
     /// The numbers are unique across domains and stable (they may be stored); new codes take new numbers. An
     /// <see cref="IssueCode"/> carries any domain's code.
     /// </summary>

@@ -112,7 +112,7 @@ namespace SoftBodyDynamics.Solvers
         public int MaxSubsteps;
         /// <summary>
         /// Fewest substeps per step (0–256, at most <see cref="MaxSubsteps"/> take effect): more than the CFL limit asks for
-        /// buy a smaller h. 0 = the CFL limit alone (default). A <c>SoftBodyWorldSettings</c> singleton raises it to its minimum.
+        /// buy a smaller h. 0 = the CFL limit alone (default). A <c>ParticleWorldSettings</c> singleton raises it to its minimum.
         /// </summary>
         public int MinSubsteps;
         /// <summary>Speed bound (m/s): faster particles are slowed to it and counted in the report. Default 50 m/s.</summary>

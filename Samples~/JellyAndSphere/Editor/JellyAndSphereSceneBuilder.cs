@@ -70,7 +70,7 @@ namespace SoftBodyDynamics.Samples.JellyAndSphere
                 step.transform.position = new Vector3(x, 0.5f * height, 0f);
                 step.transform.localScale = new Vector3(k_StepDepth, height, k_StepWidth);
                 // The default box (1 m cube at the centre) matches the cube mesh; the Transform's scale sizes both.
-                step.AddComponent<SoftBodyColliderAuthoring>().shape = ColliderShapeType.Box;
+                step.AddComponent<ParticleColliderAuthoring>().shape = ColliderShapeType.Box;
             }
         }
 

@@ -10,7 +10,7 @@ namespace SoftBodyDynamics.Samples.WaterTap
 {
     /// <summary>
     /// Builds the "Water Tap" sample next to this script: a main scene (camera, light, one SubScene) and the SubScene it
-    /// loads: a 1 m basin (a floor plane and four box walls, all soft-body colliders), a fluid of water (Entities storage,
+    /// loads: a 1 m basin (a floor plane and four box walls, all particle colliders), a fluid of water (Entities storage,
     /// every particle an instance of a small sphere prefab drawn by Entities Graphics), a tap pouring 400 particles/s down
     /// into the basin and a drain in one corner of the floor. Switch the fluid's Preset to Honey or Lava in its inspector.
     /// Menu: Tools ▸ Soft Body Dynamics ▸ Samples ▸ Build Water Tap Scene.
@@ -102,7 +102,7 @@ namespace SoftBodyDynamics.Samples.WaterTap
             GameObject wall = SampleSceneBuilder.CreateVisual(name, PrimitiveType.Cube, material, scene);
             wall.transform.position = position;
             wall.transform.localScale = size;
-            SoftBodyColliderAuthoring collider = wall.AddComponent<SoftBodyColliderAuthoring>();
+            ParticleColliderAuthoring collider = wall.AddComponent<ParticleColliderAuthoring>();
             collider.shape = ColliderShapeType.Box;
             collider.size = Vector3.one;
         }

@@ -8,12 +8,12 @@ using UnityEngine.UIElements;
 namespace SoftBodyDynamics.Editor
 {
     /// <summary>
-    /// Inspector of <see cref="SoftBodyColliderAuthoring"/>: shows only the size fields the chosen shape uses and
+    /// Inspector of <see cref="ParticleColliderAuthoring"/>: shows only the size fields the chosen shape uses and
     /// the live list of validation errors and warnings, including those caused by the Transform's scale.
     /// </summary>
-    [CustomEditor(typeof(SoftBodyColliderAuthoring))]
+    [CustomEditor(typeof(ParticleColliderAuthoring))]
     [CanEditMultipleObjects]
-    public sealed class SoftBodyColliderAuthoringEditor : UnityEditor.Editor
+    public sealed class ParticleColliderAuthoringEditor : UnityEditor.Editor
     {
         PropertyField m_Size;
         PropertyField m_Radius;
@@ -26,14 +26,14 @@ namespace SoftBodyDynamics.Editor
             var root = new VisualElement();
             m_Issues = new VisualElement();
             root.Add(m_Issues);
-            root.Add(new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.shape))));
-            root.Add(new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.center))));
-            root.Add(m_Size = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.size))));
-            root.Add(m_Radius = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.radius))));
-            root.Add(m_Height = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.height))));
-            root.Add(m_Direction = new PropertyField(serializedObject.FindProperty(nameof(SoftBodyColliderAuthoring.direction))));
+            root.Add(new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.shape))));
+            root.Add(new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.center))));
+            root.Add(m_Size = new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.size))));
+            root.Add(m_Radius = new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.radius))));
+            root.Add(m_Height = new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.height))));
+            root.Add(m_Direction = new PropertyField(serializedObject.FindProperty(nameof(ParticleColliderAuthoring.direction))));
 
-            SoftBodyInspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
+            InspectorSupport.TrackTargetsAndTransforms(root, this, Refresh);
             Refresh();
             return root;
         }
@@ -47,15 +47,15 @@ namespace SoftBodyDynamics.Editor
             m_Issues.Clear();
             foreach (Object selected in targets)
             {
-                var collider = selected as SoftBodyColliderAuthoring;
+                var collider = selected as ParticleColliderAuthoring;
                 if (collider == null)
                     continue;
                 usesSize |= collider.shape == ColliderShapeType.Box;
                 usesRadius |= collider.shape == ColliderShapeType.Sphere || collider.shape == ColliderShapeType.Capsule;
                 usesCapsule |= collider.shape == ColliderShapeType.Capsule;
                 string prefix = several ? collider.name + ": " : "";
-                foreach (ValidationIssue issue in SoftBodyColliderValidation.Validate(collider))
-                    m_Issues.Add(SoftBodyInspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
+                foreach (ValidationIssue issue in ParticleColliderValidation.Validate(collider))
+                    m_Issues.Add(InspectorSupport.IssueBox(prefix + issue.Message, issue.Severity));
             }
             Show(m_Size, usesSize);
             Show(m_Radius, usesRadius);

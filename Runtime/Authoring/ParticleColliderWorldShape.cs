@@ -10,12 +10,12 @@ namespace SoftBodyDynamics.Authoring
     /// ones (as Unity's own colliders do); validation warns when that loses information. A plane passes through
     /// the transformed centre with the GameObject's up axis as its outward normal; its scale does not matter.
     /// </summary>
-    public static class SoftBodyColliderWorldShape
+    public static class ParticleColliderWorldShape
     {
         /// <summary>The plane's local normal: the GameObject's up axis.</summary>
         public static readonly float3 LocalPlaneNormal = new float3(0f, 1f, 0f);
 
-        public static ColliderShape Compute(in SoftBodyColliderDefinition collider, float3 position, quaternion rotation,
+        public static ColliderShape Compute(in ParticleColliderDefinition collider, float3 position, quaternion rotation,
             float3 lossyScale)
         {
             float3 scale = math.abs(lossyScale);
@@ -45,19 +45,19 @@ namespace SoftBodyDynamics.Authoring
         }
 
         /// <summary>The larger of the two scale factors across a capsule's axis.</summary>
-        public static float RadialScale(float3 absoluteScale, SoftBodyCapsuleAxis direction)
+        public static float RadialScale(float3 absoluteScale, ColliderCapsuleAxis direction)
         {
             float2 radial = RadialScales(absoluteScale, direction);
             return math.max(radial.x, radial.y);
         }
 
         /// <summary>The two scale factors across a capsule's axis, in X, Y, Z order.</summary>
-        public static float2 RadialScales(float3 absoluteScale, SoftBodyCapsuleAxis direction)
+        public static float2 RadialScales(float3 absoluteScale, ColliderCapsuleAxis direction)
         {
             switch (direction)
             {
-                case SoftBodyCapsuleAxis.X: return new float2(absoluteScale.y, absoluteScale.z);
-                case SoftBodyCapsuleAxis.Z: return new float2(absoluteScale.x, absoluteScale.y);
+                case ColliderCapsuleAxis.X: return new float2(absoluteScale.y, absoluteScale.z);
+                case ColliderCapsuleAxis.Z: return new float2(absoluteScale.x, absoluteScale.y);
                 default: return new float2(absoluteScale.x, absoluteScale.z);
             }
         }

@@ -9,9 +9,9 @@ namespace SoftBodyDynamics
     /// <see cref="SoftBodyDynamics.Solvers.ParticleBodySettings.Acceleration"/>,
     /// <see cref="SoftBodyDynamics.Solvers.FluidParameters.Gravity"/>), and every body and fluid takes at least
     /// <see cref="MinSubsteps"/> substeps per fixed step (a fluid more when its CFL limit asks). Without it each uses its own values.
-    /// Add it with <c>SoftBodyWorldAuthoring</c> in a SubScene, or from code.
+    /// Add it with <c>ParticleWorldAuthoring</c> in a SubScene, or from code.
     /// </summary>
-    public struct SoftBodyWorldSettings : IComponentData
+    public struct ParticleWorldSettings : IComponentData
     {
         /// <summary>Acceleration of gravity for every particle body and fluid (m/s²).</summary>
         public float3 Gravity;
@@ -19,7 +19,7 @@ namespace SoftBodyDynamics
         public int MinSubsteps;
 
         /// <summary>Earth gravity, one substep minimum.</summary>
-        public static SoftBodyWorldSettings Default => new SoftBodyWorldSettings { Gravity = new float3(0f, -9.81f, 0f), MinSubsteps = 1 };
+        public static ParticleWorldSettings Default => new ParticleWorldSettings { Gravity = new float3(0f, -9.81f, 0f), MinSubsteps = 1 };
 
         /// <summary>A particle body's shared settings as this world steps it, whatever its method: the world's gravity and at least its substeps.</summary>
         public SoftBodyDynamics.Solvers.ParticleBodySettings Apply(SoftBodyDynamics.Solvers.ParticleBodySettings body)

@@ -9,7 +9,7 @@ using UnityEngine.UIElements;
 namespace SoftBodyDynamics.Editor
 {
     /// <summary>What the soft-body and collider inspectors share: live refresh and issue help boxes.</summary>
-    static class SoftBodyInspectorSupport
+    static class InspectorSupport
     {
         /// <summary>
         /// Calls <paramref name="refresh"/> whenever a serialized value of <paramref name="editor"/>'s targets or of

@@ -8,13 +8,13 @@ namespace SoftBodyDynamics.Authoring
     /// Every check on an authored collider, in one place: the baker refuses to bake a collider with an error,
     /// and the inspector shows the same list.
     /// </summary>
-    public static class SoftBodyColliderValidation
+    public static class ParticleColliderValidation
     {
         /// <summary>Relative difference between scale factors above which a scale counts as non-uniform.</summary>
         public const float UniformScaleTolerance = 1e-3f;
 
         /// <summary>The issues of <paramref name="authoring"/> with its current transform.</summary>
-        public static List<ValidationIssue> Validate(SoftBodyColliderAuthoring authoring)
+        public static List<ValidationIssue> Validate(ParticleColliderAuthoring authoring)
         {
             var issues = new List<ValidationIssue>();
             var transform = authoring.transform;
@@ -25,7 +25,7 @@ namespace SoftBodyDynamics.Authoring
         }
 
         /// <summary>Appends the issues of <paramref name="collider"/> placed by the given transform to <paramref name="issues"/>.</summary>
-        public static void Validate(in SoftBodyColliderDefinition collider, float3 position, quaternion rotation,
+        public static void Validate(in ParticleColliderDefinition collider, float3 position, quaternion rotation,
             float3 lossyScale, List<ValidationIssue> issues)
         {
             if (collider.Shape != ColliderShapeType.Plane && collider.Shape != ColliderShapeType.Sphere
@@ -74,14 +74,14 @@ namespace SoftBodyDynamics.Authoring
                         issues.Add(Warning(ColliderIssueCode.CapsuleShorterThanDiameter,
                             $"Height {collider.Height} m is less than the diameter {2f * collider.Radius} m, so the capsule is a sphere. "
                             + "Use the Sphere shape, or make the height at least twice the radius."));
-                    if (collider.Direction > SoftBodyCapsuleAxis.Z)
+                    if (collider.Direction > ColliderCapsuleAxis.Z)
                     {
                         issues.Add(Error(ColliderIssueCode.ShapeInvalid,
                             $"Capsule direction {(int)collider.Direction} is not X, Y or Z. Pick one of them."));
                         break;
                     }
-                    float2 radial = SoftBodyColliderWorldShape.RadialScales(scale, collider.Direction);
-                    float radialScale = SoftBodyColliderWorldShape.RadialScale(scale, collider.Direction);
+                    float2 radial = ParticleColliderWorldShape.RadialScales(scale, collider.Direction);
+                    float radialScale = ParticleColliderWorldShape.RadialScale(scale, collider.Direction);
                     CheckScale(scale, radialScale == 0f, "capsule", issues);
                     if (finiteScale && !IsUniform(radial.x, radial.y))
                         issues.Add(Warning(ColliderIssueCode.NonUniformScale,

@@ -5,9 +5,9 @@ namespace SoftBodyDynamics.Authoring
 {
     /// <summary>
     /// A collider as authored, in the local space of its GameObject before the transform's scale: what
-    /// <see cref="SoftBodyColliderAuthoring"/> serializes, as plain data that conversion and validation work on.
+    /// <see cref="ParticleColliderAuthoring"/> serializes, as plain data that conversion and validation work on.
     /// </summary>
-    public struct SoftBodyColliderDefinition
+    public struct ParticleColliderDefinition
     {
         /// <summary>Plane, sphere, box or capsule.</summary>
         public ColliderShapeType Shape;
@@ -20,6 +20,6 @@ namespace SoftBodyDynamics.Authoring
         /// <summary>Capsule: total height from tip to tip, both caps included (m).</summary>
         public float Height;
         /// <summary>Capsule: the local axis it runs along.</summary>
-        public SoftBodyCapsuleAxis Direction;
+        public ColliderCapsuleAxis Direction;
     }
 }

@@ -6,11 +6,11 @@ namespace SoftBodyDynamics.Authoring
     /// <summary>
     /// A static collider that soft-body particles collide with: an infinite plane, a sphere, a box or a capsule,
     /// placed by this GameObject's Transform (position, rotation and scale). Baked once into a world-space
-    /// <see cref="SoftBodyCollider"/>; moving the GameObject at runtime does not move the collider.
+    /// <see cref="ParticleCollider"/>; moving the GameObject at runtime does not move the collider.
     /// </summary>
     [DisallowMultipleComponent]
-    [AddComponentMenu("Soft Body Dynamics/Soft Body Collider")]
-    public sealed class SoftBodyColliderAuthoring : MonoBehaviour
+    [AddComponentMenu("Soft Body Dynamics/Particle Collider")]
+    public sealed class ParticleColliderAuthoring : MonoBehaviour
     {
         [Tooltip("Plane: infinite, solid below this GameObject's up axis. Sphere, Box, Capsule: solid primitives.")]
         public ColliderShapeType shape = ColliderShapeType.Box;
@@ -30,10 +30,10 @@ namespace SoftBodyDynamics.Authoring
         public float height = 2f;
 
         [Tooltip("Capsule: the local axis it runs along.")]
-        public SoftBodyCapsuleAxis direction = SoftBodyCapsuleAxis.Y;
+        public ColliderCapsuleAxis direction = ColliderCapsuleAxis.Y;
 
         /// <summary>The serialized fields as plain data.</summary>
-        public SoftBodyColliderDefinition Definition => new SoftBodyColliderDefinition
+        public ParticleColliderDefinition Definition => new ParticleColliderDefinition
         {
             Shape = shape,
             Center = UnityMathConversions.ToFloat3(center),
@@ -44,7 +44,7 @@ namespace SoftBodyDynamics.Authoring
         };
 
         /// <summary>The world-space shape for the current Transform (what the baker stores).</summary>
-        public ColliderShape ToWorldShape() => SoftBodyColliderWorldShape.Compute(Definition,
+        public ColliderShape ToWorldShape() => ParticleColliderWorldShape.Compute(Definition,
             UnityMathConversions.ToFloat3(transform.position), UnityMathConversions.ToQuaternion(transform.rotation),
             UnityMathConversions.ToFloat3(transform.lossyScale));
 
