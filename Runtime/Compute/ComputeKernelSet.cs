@@ -6,7 +6,7 @@ namespace SoftBodyDynamics.Compute
 {
     /// <summary>
     /// The kernels of one <see cref="ComputeShader"/>, found by name once with their reflected thread-group sizes, and
-    /// the shader property IDs of its buffers and constants (names are "_" + the enum names of the caller): the dispatch
+    /// the shader property IDs of its buffers and per-dispatch arguments (names are "_" + the enum names of the caller): the dispatch
     /// plumbing that <see cref="FluidComputeSolver"/> and <see cref="SoftBodyComputeSolver"/> share.
     /// </summary>
     sealed class ComputeKernelSet
@@ -49,8 +49,6 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Binds <paramref name="graphicsBuffer"/> as buffer <paramref name="buffer"/> of one kernel.</summary>
         public void Bind(int kernel, int buffer, GraphicsBuffer graphicsBuffer) =>
             m_Shader.SetBuffer(m_Kernels[kernel], m_BufferIds[buffer], graphicsBuffer);
-
-        public void SetVector(int global, float4 value) => m_Shader.SetVector(m_GlobalIds[global], new Vector4(value.x, value.y, value.z, value.w));
 
         public void SetInts(int global, int4 value)
         {

@@ -19,6 +19,7 @@ namespace SoftBodyDynamics.Compute
     public sealed class FluidComputeSolver : IFluidComputeCommands, IDisposable
     {
         readonly ComputeKernelSet m_Kernels;
+        readonly ComputeConstantBuffer<FluidComputeConstants> m_ConstantBuffer;
         readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[Enum.GetValues(typeof(FluidComputeBuffer)).Length];
         readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
         FluidConstants m_Constants;
@@ -33,6 +34,7 @@ namespace SoftBodyDynamics.Compute
         public FluidComputeSolver(ComputeShader shader, in FluidConstants constants, int capacity)
         {
             m_Kernels = new ComputeKernelSet(shader, typeof(FluidKernel), typeof(FluidComputeBuffer), typeof(FluidComputeGlobal));
+            m_ConstantBuffer = new ComputeConstantBuffer<FluidComputeConstants>(shader, FluidComputeConstants.BufferName, FluidComputeConstants.Bytes);
             m_Constants = constants;
             Allocate(math.max(capacity, 1));
         }
@@ -203,7 +205,7 @@ namespace SoftBodyDynamics.Compute
             m_ReadbackPending = true;
         }
 
-        public void SetVector(FluidComputeGlobal name, float4 value) => m_Kernels.SetVector((int)name, value);
+        public void SetConstants(in FluidComputeConstants constants) => m_ConstantBuffer.Set(constants);
         public void SetInts(FluidComputeGlobal name, int4 value) => m_Kernels.SetInts((int)name, value);
         public void Dispatch(FluidKernel kernel, int threads) => m_Kernels.Dispatch((int)kernel, threads);
         public void DispatchIndirect(FluidKernel kernel) => m_Kernels.DispatchIndirect((int)kernel, m_Buffers[(int)FluidComputeBuffer.Args]);
@@ -211,6 +213,7 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Releases every buffer.</summary>
         public void Dispose()
         {
+            m_ConstantBuffer.Dispose();
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 m_Buffers[b]?.Release();

@@ -15,11 +15,13 @@ namespace SoftBodyDynamics.Compute
     public sealed class SoftBodyComputeSolver : ISoftBodyComputeCommands, IDisposable
     {
         readonly ComputeKernelSet m_Kernels;
+        readonly ComputeConstantBuffer<SoftBodyComputeConstants> m_ConstantBuffer;
         readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[Enum.GetValues(typeof(SoftBodyComputeBuffer)).Length];
 
         public SoftBodyComputeSolver(ComputeShader shader)
         {
             m_Kernels = new ComputeKernelSet(shader, typeof(SoftBodyKernel), typeof(SoftBodyComputeBuffer), typeof(SoftBodyComputeGlobal));
+            m_ConstantBuffer = new ComputeConstantBuffer<SoftBodyComputeConstants>(shader, SoftBodyComputeConstants.BufferName, SoftBodyComputeConstants.Bytes);
             // Every kernel must have each buffer it declares bound, even one it is not dispatched with.
             for (int b = 0; b < m_Buffers.Length; b++)
                 Ensure((SoftBodyComputeBuffer)b, 1, 16);
@@ -47,13 +49,14 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Allocates a buffer the kernels write (multipliers, predicted positions, cluster results).</summary>
         public void Allocate(SoftBodyComputeBuffer id, int count, int stride) => Ensure(id, count, stride);
 
-        public void SetVector(SoftBodyComputeGlobal name, float4 value) => m_Kernels.SetVector((int)name, value);
+        public void SetConstants(in SoftBodyComputeConstants constants) => m_ConstantBuffer.Set(constants);
         public void SetInts(SoftBodyComputeGlobal name, int4 value) => m_Kernels.SetInts((int)name, value);
         public void Dispatch(SoftBodyKernel kernel, int threads) => m_Kernels.Dispatch((int)kernel, threads);
         public void DispatchGroups(SoftBodyKernel kernel, int groups) => m_Kernels.DispatchGroups((int)kernel, groups);
 
         public void Dispose()
         {
+            m_ConstantBuffer.Dispose();
             for (int b = 0; b < m_Buffers.Length; b++)
             {
                 m_Buffers[b]?.Release();

@@ -1,6 +1,6 @@
 // The soft bodies' static colliders and the drains as the fluid kernels see them: a port of ColliderShape,
 // ParticleCollision (Penetration, Sweep) and ContactProjection.Project. Shapes are 5 float4 each in _Shapes
-// (FluidComputeStep.PackShapes): the colliders first (_ShapeCounts.x of them), then the drains (_ShapeCounts.y).
+// (FluidComputeStep.PackShapes): the colliders first (ColliderCount of them), then the drains (DrainCount).
 #ifndef SBD_FLUID_COLLIDERS_INCLUDED
 #define SBD_FLUID_COLLIDERS_INCLUDED
 #include "FluidCommon.hlsl"
@@ -164,10 +164,10 @@ void Drain(uint3 id : SV_DispatchThreadID)
     float4 vl = _Velocities[i];
     if (vl.w < 0.0) return;
     float3 x = _Positions[i].xyz;
-    for (uint d = 0; d < _ShapeCounts.y; d++)
+    for (uint d = 0; d < DrainCount; d++)
     {
         float3 n; float depth; bool deep;
-        if (Penetration(LoadShape(_ShapeCounts.x + d), x, 0.0, n, depth, deep))
+        if (Penetration(LoadShape(ColliderCount + d), x, 0.0, n, depth, deep))
         {
             _Velocities[i] = float4(vl.xyz, -1.0);
             return;
@@ -183,11 +183,11 @@ void Collide(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    float radius = _DomainMin.w, h = _Motion.x, friction = _Colliding.x, maxDepenetration = _Motion.y * h;
+    float radius = WallDistance, h = SubstepSeconds, friction = ColliderFriction, maxDepenetration = MaxSpeed * h;
     float4 xa = _Positions[i];
     float3 start = xa.xyz, x = start, previous = _Previous[i].xyz;
     float3 contactNormal = float3(0.0, 0.0, 0.0);
-    for (uint c = 0; c < _ShapeCounts.x; c++)
+    for (uint c = 0; c < ColliderCount; c++)
     {
         Shape s = LoadShape(c);
         float3 n; float depth; bool deep;

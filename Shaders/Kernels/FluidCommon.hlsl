@@ -4,6 +4,8 @@
 #ifndef SBD_FLUID_COMMON_INCLUDED
 #define SBD_FLUID_COMMON_INCLUDED
 
+#include "FluidComputeConstants.hlsl"
+
 // Threads per group of every particle kernel; FluidComputeLayout.ThreadGroupSize on the C# side (checked at load).
 #define FLUID_GROUP 256
 // Neighbour list capacity per particle (FluidScratch.MaxNeighbours).
@@ -57,27 +59,9 @@ RWStructuredBuffer<uint> _Args;          // indirect dispatch arguments: ceil(li
 RWStructuredBuffer<float4> _Shapes;      // colliders, then drains: 5 float4 each (FluidColliders.hlsl)
 RWStructuredBuffer<float4> _RenderParticles; // xyz position, w attribute for the fluid renderer; NaN beyond the live ones
 
-// Constants, computed on the CPU (FluidComputeConstants.Set).
-float4 _GridOrigin;      // xyz grid origin (m), w 1 / cell size (1/m)
-uint4 _GridDims;         // xyz cells along each axis, w cell count (= the dead key)
-float4 _DomainMin;       // xyz (m), w wall distance (m)
-float4 _DomainMax;       // xyz (m), w wall scale κ
-float4 _Gravity;         // xyz (m/s²), w position-based artificial pressure scale k·λ₁ (m²)
-float4 _Kernel;          // h (m), h² (m²), poly6 coefficient, spiky gradient coefficient
-float4 _Kernel2;         // cohesion coefficient, cohesion offset, viscosity Laplacian coefficient, gradient correction κ∇
-float4 _Material;        // particle mass (kg), ρ₀ (kg/m³), Tait stiffness B (Pa), max density ratio
-float4 _Motion;          // substep h (s), max speed (m/s), 2·α·c₀·h (artificial viscosity), position-based relaxation ε
-float4 _Cohesion;        // cohesion weight (1/s²), separation weight (1/s²), spacing (m), surface tension γ
-float4 _Smoothing;       // viscosity h·ν·2m·(Laplacian coefficient), alignment blend 1 − e^(−rate·h), step dt (s), bulk-viscous scale (FluidConstants.BulkPressureScale)
-uint4 _Flags;            // x weakly compressible, y flocking, z Akinci, w unused
+// Per-dispatch arguments (set before each dispatch that reads them, FluidComputeStep).
 uint4 _Counts;           // x capacity, y spawn count, z scan element count, w scan data offset
 uint4 _Scan;             // x index of the level's block totals in _ScanSums, yzw unused
-uint4 _ShapeCounts;      // x colliders, y drains (in _Shapes), zw unused
-float4 _Colliding;       // x collider friction μ, yzw the domain faces' μ per axis
-float4 _Period;          // xyz the domain's extent on its periodic axes (m), 0 on the others; w 1 when any axis is periodic
-float4 _InversePeriod;   // xyz 1 / the period on the periodic axes (1/m), 0 on the others; w unused
-float4 _NoSlip;          // xyz no-slip share of the domain faces per axis (0 on periodic axes); w the colliders' share
-float4 _Renormalization; // x gradient trace scale −κ∇·m·C_spiky, y the walls' trace scale κ_T, z largest renormalization, w unused
 
 bool IsFinite3(float3 v) { return all(abs(v) <= FLOAT_MAX); }
 
@@ -87,33 +71,33 @@ uint LiveCount() { return _Stats[STAT_LIVE]; }
 float3 PairOffset(float3 xi, float3 xj)
 {
     float3 d = xi - xj;
-    if (_Period.w != 0.0) d -= _Period.xyz * round(d * _InversePeriod.xyz);
+    if (IsPeriodic != 0.0) d -= Period * round(d * InversePeriod);
     return d;
 }
 
 // FluidGrid.Cell: the cell of x, clamped into the grid (clamped in float first).
 int3 CellOf(float3 x)
 {
-    float3 c = (x - _GridOrigin.xyz) * _GridOrigin.w;
-    return int3(clamp(floor(c), 0.0, float3(_GridDims.xyz) - 1.0));
+    float3 c = (x - GridOrigin) * InverseCellSize;
+    return int3(clamp(floor(c), 0.0, float3(GridDimensions) - 1.0));
 }
 
-uint KeyOf(int3 cell) { return (uint)(cell.x + (int)_GridDims.x * (cell.y + (int)_GridDims.y * cell.z)); }
+uint KeyOf(int3 cell) { return (uint)(cell.x + GridDimensions.x * (cell.y + GridDimensions.y * cell.z)); }
 
 // SphKernels.SpikyGradientScale: ∇W = scale·r (1/m⁵); zero at r = 0 and r ≥ h.
 float SpikyGradientScale(float r)
 {
-    if (!(r < _Kernel.x) || !(r > 0.0)) return 0.0;
-    float d = _Kernel.x - r;
-    return _Kernel.w * d * d / r;
+    if (!(r < SmoothingLength) || !(r > 0.0)) return 0.0;
+    float d = SmoothingLength - r;
+    return SpikyGradientCoefficient * d * d / r;
 }
 
 // SphKernels.Poly6 from r².
 float Poly6(float r2)
 {
-    if (!(r2 < _Kernel.y)) return 0.0;
-    float d = _Kernel.y - r2;
-    return _Kernel.z * d * d * d;
+    if (!(r2 < SmoothingLengthSquared)) return 0.0;
+    float d = SmoothingLengthSquared - r2;
+    return Poly6Coefficient * d * d * d;
 }
 
 // FluidPasses.CoincidentDirection: a unit vector fixed by an unordered id pair, negated when the ids swap.

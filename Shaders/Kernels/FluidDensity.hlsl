@@ -34,19 +34,19 @@ float StoreDensity(uint i, float3 xi, float kernelSum, out float wallTrace)
 {
     float wall; float3 push;
     SampleWalls(xi, wall, push, wallTrace);
-    float rho = _Material.x * _Kernel.z * kernelSum + _Material.y * wall;
+    float rho = ParticleMass * Poly6Coefficient * kernelSum + RestDensity * wall;
     _Densities[i] = rho;
-    float ratio = rho / _Material.y;
+    float ratio = rho / RestDensity;
     InterlockedMax(_Stats[STAT_MAX_DENSITY_RATIO], asuint(max(ratio, 0.0)));
-    if (ratio > _Material.w) InterlockedAdd(_Stats[STAT_OVER_COMPRESSED], 1);
+    if (ratio > MaxDensityRatio) InterlockedAdd(_Stats[STAT_OVER_COMPRESSED], 1);
     return rho;
 }
 
 // FluidConstants.GradientRenormalization: 3 / the corrected gradient trace, clamped to 1/limit … limit.
 float GradientRenormalization(float spikySum, float rho, float wallTrace)
 {
-    float trace = _Renormalization.x * spikySum / rho + wallTrace;
-    return clamp(3.0 / trace, 1.0 / _Renormalization.z, _Renormalization.z);
+    float trace = GradientTraceScale * spikySum / rho + wallTrace;
+    return clamp(3.0 / trace, 1.0 / MaxGradientRenormalization, MaxGradientRenormalization);
 }
 
 // Müller 2003 eq. 3 with the neighbour list; weakly compressible adds the Tait pressure (Becker & Teschner 2007,
@@ -58,26 +58,26 @@ void Density(uint3 id : SV_DispatchThreadID)
     uint i = id.x;
     if (i >= LiveCount()) return;
     float3 xi = _Positions[i].xyz;
-    float h2 = _Kernel.y;
+    float h2 = SmoothingLengthSquared;
     int3 c = CellOf(xi);
-    int3 d = int3(_GridDims.xyz);
+    int3 d = GridDimensions;
     int x0 = max(c.x - 2, 0), x1 = min(c.x + 2, d.x - 1);
     int y0 = max(c.y - 2, 0), y1 = min(c.y + 2, d.y - 1);
     int z0 = max(c.z - 2, 0), z1 = min(c.z + 2, d.z - 1);
     uint listStart = i * MAX_NEIGHBOURS, found = 0, overflow = 0;
     float sum = 0.0, divergence = 0.0, spiky = 0.0;
-    bool tait = _Flags.x != 0;
-    bool bulk = _Flags.x != 0 && _Smoothing.w > 0.0;
+    bool tait = WeaklyCompressible != 0;
+    bool bulk = WeaklyCompressible != 0 && BulkPressureScale > 0.0;
     float3 vi = bulk ? _Velocities[i].xyz : float3(0.0, 0.0, 0.0);
     // The cells within h along each axis as two ranges each (the second empty unless a periodic axis wraps).
     int4 xs = int4(x0, x1, 0, -1), ys = int4(y0, y1, 0, -1), zs = int4(z0, z1, 0, -1);
-    if (_Period.w != 0.0)
+    if (IsPeriodic != 0.0)
     {
-        float3 extent = max(_DomainMax.xyz - _DomainMin.xyz, 1.0 / _GridOrigin.w) * _GridOrigin.w;
-        float3 u = clamp((xi - _GridOrigin.xyz) * _GridOrigin.w, 0.0, extent);
-        xs = AxisRanges(u.x, d.x, _Period.x > 0.0, extent.x);
-        ys = AxisRanges(u.y, d.y, _Period.y > 0.0, extent.y);
-        zs = AxisRanges(u.z, d.z, _Period.z > 0.0, extent.z);
+        float3 extent = max(DomainMax - DomainMin, 1.0 / InverseCellSize) * InverseCellSize;
+        float3 u = clamp((xi - GridOrigin) * InverseCellSize, 0.0, extent);
+        xs = AxisRanges(u.x, d.x, Period.x > 0.0, extent.x);
+        ys = AxisRanges(u.y, d.y, Period.y > 0.0, extent.y);
+        zs = AxisRanges(u.z, d.z, Period.z > 0.0, extent.z);
     }
     for (int zp = 0; zp < 2; zp++)
     for (int z = zp == 0 ? zs.x : zs.z; z <= (zp == 0 ? zs.y : zs.w); z++)
@@ -99,7 +99,7 @@ void Density(uint3 id : SV_DispatchThreadID)
             if (tait)
             {
                 float distance = sqrt(h2 - q);
-                float hr = _Kernel.x - distance;
+                float hr = SmoothingLength - distance;
                 spiky += hr * hr * distance;
             }
             if (bulk) divergence += dot(vi - _Velocities[j].xyz, r) * (q * q);
@@ -113,13 +113,13 @@ void Density(uint3 id : SV_DispatchThreadID)
     float rho = StoreDensity(i, xi, sum, wallTrace);
     if (tait)
     {
-        float rho0 = _Material.y;
+        float rho0 = RestDensity;
         float rc = max(rho, rho0);
         float qr = rc / rho0;
         float q2 = qr * qr;
-        float pressure = _Material.z * (q2 * q2 * q2 * qr - 1.0);
-        // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ (FluidConstants.BulkPressureScale in _Smoothing.w); the total stays ≥ 0.
-        if (bulk) pressure = max(pressure - _Smoothing.w * divergence / rho, 0.0);
+        float pressure = TaitStiffness * (q2 * q2 * q2 * qr - 1.0);
+        // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ (FluidConstants.BulkPressureScale); the total stays ≥ 0.
+        if (bulk) pressure = max(pressure - BulkPressureScale * divergence / rho, 0.0);
         _Pressures[i] = GradientRenormalization(spiky, rho, wallTrace) * pressure / (rc * rc);
     }
 }
@@ -131,7 +131,7 @@ void DensityFromNeighbours(uint3 id : SV_DispatchThreadID)
     uint i = id.x;
     if (i >= LiveCount()) return;
     float3 xi = _Positions[i].xyz;
-    float h2 = _Kernel.y;
+    float h2 = SmoothingLengthSquared;
     float sum = h2 * h2 * h2;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)

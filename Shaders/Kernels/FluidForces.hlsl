@@ -10,7 +10,7 @@ void SurfaceNormals(uint3 id : SV_DispatchThreadID)
     uint i = id.x;
     if (i >= LiveCount()) return;
     float3 xi = _Positions[i].xyz;
-    float m = _Material.x;
+    float m = ParticleMass;
     float3 n = float3(0.0, 0.0, 0.0);
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint a = 0; a < count; a++)
@@ -19,15 +19,15 @@ void SurfaceNormals(uint3 id : SV_DispatchThreadID)
         float3 rij = PairOffset(xi, _Positions[j].xyz);
         n += (m / _Densities[j]) * SpikyGradientScale(length(rij)) * rij;
     }
-    _VectorsB[i] = float4(_Kernel.x * n, 0.0);
+    _VectorsB[i] = float4(SmoothingLength * n, 0.0);
 }
 
 // Weakly compressible: gravity, the symmetric pressure term with Monaghan's artificial viscosity (Müller 2003, eq. 10;
 // Becker & Teschner 2007, eq. 11) and the walls' push (Akinci 2012, eq. 9); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
 float4 Acceleration(uint i, bool pressureAndGravity)
 {
-    float h = _Motion.x, H = _Kernel.x, H2 = _Kernel.y;
-    float m = _Material.x, rho0 = _Material.y;
+    float h = SubstepSeconds, H = SmoothingLength, H2 = SmoothingLengthSquared;
+    float m = ParticleMass, rho0 = RestDensity;
     float3 xi = _Positions[i].xyz;
     float3 vi = _Velocities[i].xyz;
     float3 a = float3(0.0, 0.0, 0.0);
@@ -35,7 +35,7 @@ float4 Acceleration(uint i, bool pressureAndGravity)
     int idI = (int)_Extras[i].y;
     if (pressureAndGravity)
     {
-        float alphaCh = _Motion.z, eta2 = 0.01 * H2, minDistance = 1e-6 * H;
+        float alphaCh = ArtificialViscosity, eta2 = 0.01 * H2, minDistance = 1e-6 * H;
         float pi = _Pressures[i], rhoi = _Densities[i];
         float3 sum = float3(0.0, 0.0, 0.0);
         for (uint n = 0; n < count; n++)
@@ -56,16 +56,16 @@ float4 Acceleration(uint i, bool pressureAndGravity)
             else
                 sum += scale * H2 * CoincidentDirection(idI, (int)_Extras[j].y);
         }
-        sum *= -m * _Kernel.w * _Kernel2.w;
+        sum *= -m * SpikyGradientCoefficient * GradientCorrection;
         float wall, trace; float3 push;
         SampleWalls(xi, wall, push, trace);
-        a += _Gravity.xyz + sum + rho0 * pi * push;
+        a += Gravity + sum + rho0 * pi * push;
     }
-    if (_Flags.y != 0)
+    if (Flocking != 0)
     {
         // Flocking: toward the kernel-weighted neighbour centre, away from neighbours closer than the spacing.
         float3 centre = float3(0.0, 0.0, 0.0), separation = float3(0.0, 0.0, 0.0);
-        float weight = 0.0, spacing = _Cohesion.z;
+        float weight = 0.0, spacing = ParticleSpacing;
         for (uint n = 0; n < count; n++)
         {
             float3 rij = PairOffset(xi, _Positions[_Neighbours[list + n]].xyz);
@@ -77,10 +77,10 @@ float4 Acceleration(uint i, bool pressureAndGravity)
             float r = sqrt(r2);
             if (r < spacing && r > 0.0) separation += (spacing - r) / r * rij;
         }
-        if (weight > 0.0) a += _Cohesion.x * (centre / weight - xi);
-        a += _Cohesion.y * separation;
+        if (weight > 0.0) a += CohesionWeight * (centre / weight - xi);
+        a += SeparationWeight * separation;
     }
-    if (_Flags.z != 0)
+    if (Akinci != 0)
     {
         // Akinci et al. 2013, eqs. 1–5: aᵢ = −γ·Σⱼ Kᵢⱼ·(m·C(r)·r̂ + (nᵢ − nⱼ)), Kᵢⱼ = 2ρ₀/(ρᵢ + ρⱼ).
         float3 ni = _VectorsB[i].xyz;
@@ -98,12 +98,12 @@ float4 Acceleration(uint i, bool pressureAndGravity)
             {
                 float t = (H - r) * r;
                 float c3 = t * t * t;
-                float spline = _Kernel2.x * (2.0 * r > H ? c3 : 2.0 * c3 - _Kernel2.y);
+                float spline = CohesionCoefficient * (2.0 * r > H ? c3 : 2.0 * c3 - CohesionOffset);
                 cohesion = m * spline / r * rij;
             }
             sum += kij * (cohesion + (ni - _VectorsB[j].xyz));
         }
-        a -= _Cohesion.w * sum;
+        a -= SurfaceTension * sum;
     }
     return float4(vi + h * a, 0.0);
 }

@@ -35,10 +35,10 @@ void CopyVelocitiesToA(uint3 id : SV_DispatchThreadID)
 float4 ViscosityIteration(uint i, bool fromB)
 {
     float3 xi = _Positions[i].xyz;
-    float rhoi = _Densities[i], hk = _Kernel.x, hnu = _Smoothing.x;
+    float rhoi = _Densities[i], hk = SmoothingLength, hnu = ViscosityScale;
     float3 sum = float3(0.0, 0.0, 0.0);
-    bool noSlip = any(_NoSlip.xyz > 0.0) || (_NoSlip.w > 0.0 && _ShapeCounts.x > 0);
-    float weight = noSlip ? _Material.y / _Material.x * NoSlipWeight(xi) / (rhoi + _Material.y) : 0.0;
+    bool noSlip = any(FaceNoSlip > 0.0) || (ColliderNoSlip > 0.0 && ColliderCount > 0);
+    float weight = noSlip ? RestDensity / ParticleMass * NoSlipWeight(xi) / (rhoi + RestDensity) : 0.0;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)
     {
@@ -86,13 +86,13 @@ void Alignment(uint3 id : SV_DispatchThreadID)
         weight += w;
     }
     float3 vi = _Velocities[i].xyz;
-    _VectorsA[i] = float4(weight > 0.0 ? vi + _Smoothing.y * (sum / weight - vi) : vi, 0.0);
+    _VectorsA[i] = float4(weight > 0.0 ? vi + AlignmentBlend * (sum / weight - vi) : vi, 0.0);
 }
 
 // FluidPasses.Move: start position into _Previous, the speed bound (counted), x += h·v, the domain box.
 void Move(uint i, float3 v)
 {
-    float maxSpeed = _Motion.y, h = _Motion.x;
+    float maxSpeed = MaxSpeed, h = SubstepSeconds;
     float4 xa = _Positions[i];
     float3 x = xa.xyz;
     _Previous[i] = float4(x, 0.0);

@@ -10,7 +10,7 @@ void Predict(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    Move(i, _Velocities[i].xyz + _Motion.x * _Gravity.xyz);
+    Move(i, _Velocities[i].xyz + SubstepSeconds * Gravity);
 }
 
 // λᵢ = −Cᵢ / (Σₖ |∇ₖCᵢ|² + ε), Cᵢ = ρᵢ/ρ₀ − 1 clamped at 0 (eqs. 1–11), the wall term included.
@@ -19,8 +19,8 @@ void Lambda(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    float invRho0 = 1.0 / _Material.y;
-    float mOverRho0 = _Material.x * invRho0;
+    float invRho0 = 1.0 / RestDensity;
+    float mOverRho0 = ParticleMass * invRho0;
     float constraint = _Densities[i] * invRho0 - 1.0;
     if (!(constraint > 0.0)) { _Pressures[i] = 0.0; return; }
     float3 xi = _Positions[i].xyz;
@@ -36,21 +36,21 @@ void Lambda(uint3 id : SV_DispatchThreadID)
         gradI += g;
         sumSq += dot(g, g);
     }
-    _Pressures[i] = -constraint / (sumSq + dot(gradI, gradI) + _Motion.w);
+    _Pressures[i] = -constraint / (sumSq + dot(gradI, gradI) + Relaxation);
 }
 
 // (h² − Δq²)/h² of the artificial pressure's reference distance Δq = 0.2h (FluidPasses.ArtificialPressureQ).
 #define ARTIFICIAL_PRESSURE_Q 0.96
 
 // Δxᵢ = (m/ρ₀)·Σⱼ (λᵢ + λⱼ + s_corr)·∇W(xᵢ − xⱼ) − λᵢ·Σ_walls G(d)·n (eqs. 12–14) into _VectorsA, s_corr = −k·λ₁·(W(r)/W(Δq))⁴
-// with k·λ₁ in _Gravity.w (FluidConstants.ArtificialPressureScale).
+// with k·λ₁ = ArtificialPressureScale (FluidConstants.ArtificialPressureScale).
 [numthreads(FLUID_GROUP, 1, 1)]
 void Correction(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    float mOverRho0 = _Material.x / _Material.y;
-    float artificial = _Gravity.w, h2 = _Kernel.y, inverseQ = 1.0 / (ARTIFICIAL_PRESSURE_Q * _Kernel.y);
+    float mOverRho0 = ParticleMass / RestDensity;
+    float artificial = ArtificialPressureScale, h2 = SmoothingLengthSquared, inverseQ = 1.0 / (ARTIFICIAL_PRESSURE_Q * SmoothingLengthSquared);
     float3 xi = _Positions[i].xyz;
     float li = _Pressures[i];
     float3 dx = float3(0.0, 0.0, 0.0);
@@ -70,8 +70,8 @@ void Correction(uint3 id : SV_DispatchThreadID)
         }
         if (lij == 0.0) continue;
         float r = length(rij);
-        if (r > 1e-6 * _Kernel.x) dx += lij * SpikyGradientScale(r) * rij;
-        else dx += lij * _Kernel.w * _Kernel.y * CoincidentDirection(idI, (int)_Extras[j].y);
+        if (r > 1e-6 * SmoothingLength) dx += lij * SpikyGradientScale(r) * rij;
+        else dx += lij * SpikyGradientCoefficient * SmoothingLengthSquared * CoincidentDirection(idI, (int)_Extras[j].y);
     }
     dx *= mOverRho0;
     if (li != 0.0)
@@ -102,7 +102,7 @@ void VelocityFromPositions(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    float invH = 1.0 / _Motion.x;
+    float invH = 1.0 / SubstepSeconds;
     _Velocities[i] = float4(PairOffset(_Positions[i].xyz, _Previous[i].xyz) * invH, _Velocities[i].w);
 }
 

@@ -21,16 +21,16 @@ void BeginStep(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    _Positions[i].w += _Smoothing.z;
+    _Positions[i].w += StepSeconds;
     float3 v = _Velocities[i].xyz;
     float v2 = dot(v, v);
     if (v2 > 0.0 && v2 <= FLOAT_MAX) InterlockedMax(_Stats[STAT_MAX_SPEED_SQUARED], asuint(v2));
-    float g = length(_Gravity.xyz);
+    float g = length(Gravity);
     float3 x = _Positions[i].xyz;
-    if (_Flags.x == 0 && g > 0.0 && IsFinite3(x))
+    if (WeaklyCompressible == 0 && g > 0.0 && IsFinite3(x))
     {
-        float s = dot(clamp(x, _DomainMin.xyz, _DomainMax.xyz) - _DomainMin.xyz, -_Gravity.xyz / g);
-        float L = length(_DomainMax.xyz - _DomainMin.xyz);
+        float s = dot(clamp(x, DomainMin, DomainMax) - DomainMin, -Gravity / g);
+        float L = length(DomainMax - DomainMin);
         if (s >= -L && s <= L)
         {
             InterlockedMax(_Stats[STAT_MAX_HEIGHT], asuint(s + L));
@@ -62,7 +62,7 @@ void Keys(uint3 id : SV_DispatchThreadID)
     else if (!IsFinite3(xa.xyz) || !IsFinite3(vl.xyz)) removed = STAT_INVALID;
     if (removed != STAT_COUNT)
     {
-        key = _GridDims.w;
+        key = CellCount;
         InterlockedAdd(_Stats[removed], 1);
         InterlockedAdd(_Stats[removed + (STAT_TOTAL_KILLED - STAT_KILLED)], 1);
     }
@@ -102,7 +102,7 @@ void StableRanks(uint3 id : SV_DispatchThreadID)
 [numthreads(1, 1, 1)]
 void CommitSort(uint3 id : SV_DispatchThreadID)
 {
-    uint live = _CellStart[_GridDims.w];
+    uint live = _CellStart[CellCount];
     _Stats[STAT_LIVE] = live;
     _Args[0] = (live + FLUID_GROUP - 1) / FLUID_GROUP;
     _Args[1] = 1;

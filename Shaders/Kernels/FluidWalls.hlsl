@@ -7,8 +7,8 @@
 // SphKernels.WallDensityFraction: ∫W dV of poly6 beyond a plane at distance d, as a fraction of ρ₀.
 float WallDensityFraction(float d)
 {
-    if (d >= _Kernel.x) return 0.0;
-    float u = max(d, 0.0) / _Kernel.x;
+    if (d >= SmoothingLength) return 0.0;
+    float u = max(d, 0.0) / SmoothingLength;
     float u2 = u * u;
     float f = u * (1.0 + u2 * (-4.0 / 3.0 + u2 * (6.0 / 5.0 + u2 * (-4.0 / 7.0 + u2 * (1.0 / 9.0)))));
     return 0.5 - 315.0 / 256.0 * f;
@@ -17,17 +17,17 @@ float WallDensityFraction(float d)
 // SphKernels.WallGradientMagnitude: |∫∇W dV| of spiky beyond a plane at distance d (1/m).
 float WallGradientMagnitude(float d)
 {
-    if (d >= _Kernel.x) return 0.0;
-    float s = 1.0 - max(d, 0.0) / _Kernel.x;
+    if (d >= SmoothingLength) return 0.0;
+    float s = 1.0 - max(d, 0.0) / SmoothingLength;
     float s4 = s * s * s * s;
-    return 30.0 / _Kernel.x * (s4 / 4.0 - s4 * s / 5.0);
+    return 30.0 / SmoothingLength * (s4 / 4.0 - s4 * s / 5.0);
 }
 
 // SphKernels.WallGradientTrace: −∫ r·∇W dV of spiky beyond a plane at distance d, (3/2)(1 − u)⁴(2u² + 2u + 1), u = d/h.
 float WallGradientTrace(float d)
 {
-    if (!(d < _Kernel.x)) return 0.0;
-    float u = max(d, 0.0) / _Kernel.x;
+    if (!(d < SmoothingLength)) return 0.0;
+    float u = max(d, 0.0) / SmoothingLength;
     float s = 1.0 - u;
     float s2 = s * s;
     return 1.5 * s2 * s2 * (2.0 * u * u + 2.0 * u + 1.0);
@@ -37,19 +37,19 @@ float WallGradientTrace(float d)
 // point): the kernel's share outside the fluid, the push Σ κG(d)·n and the gradient trace 3·(1 − Π(1 − κ_T·T(d)/3)).
 void SampleWalls(float3 x, out float densityFraction, out float3 push, out float gradientTrace)
 {
-    float h = _Kernel.x, kappa = _DomainMax.w;
-    float3 below = x - _DomainMin.xyz;
-    float3 above = _DomainMax.xyz - x;
+    float h = SmoothingLength, kappa = WallScale;
+    float3 below = x - DomainMin;
+    float3 above = DomainMax - x;
     // A periodic axis has no faces.
-    below = _Period.xyz > 0.0 ? FLOAT_MAX : below;
-    above = _Period.xyz > 0.0 ? FLOAT_MAX : above;
+    below = Period > 0.0 ? FLOAT_MAX : below;
+    above = Period > 0.0 ? FLOAT_MAX : above;
     float inside = 1.0;
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
     gradientTrace = 0.0;
-    float outsideTrace = 1.0, traceScale = _Renormalization.y / 3.0;
+    float outsideTrace = 1.0, traceScale = GradientWallScale / 3.0;
     float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
-    if (nearest >= h && _ShapeCounts.x == 0) return;
+    if (nearest >= h && ColliderCount == 0) return;
     [unroll] for (int axis = 0; axis < 3; axis++)
     {
         float dBelow = below[axis], dAbove = above[axis];
@@ -67,7 +67,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
             outsideTrace *= 1.0 - traceScale * WallGradientTrace(dAbove);
         }
     }
-    for (uint c = 0; c < _ShapeCounts.x; c++)
+    for (uint c = 0; c < ColliderCount; c++)
     {
         // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
         float3 normal; float depth; bool deep;
@@ -85,7 +85,7 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
 // through zero at the plane (m⁴); d at least 1e-3·h.
 float NoSlipWallIntegral(float d)
 {
-    float H = _Kernel.x;
+    float H = SmoothingLength;
     if (!(d < H)) return 0.0;
     d = max(d, 1e-3 * H);
     float e = H - d;
@@ -97,16 +97,16 @@ float NoSlipWallIntegral(float d)
 // and the colliders' share at each collider's tangent plane.
 float NoSlipWeight(float3 x)
 {
-    float3 below = x - _DomainMin.xyz, above = _DomainMax.xyz - x;
-    float weight = _NoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
-        + _NoSlip.y * (NoSlipWallIntegral(below.y) + NoSlipWallIntegral(above.y))
-        + _NoSlip.z * (NoSlipWallIntegral(below.z) + NoSlipWallIntegral(above.z));
-    if (_NoSlip.w > 0.0)
-        for (uint c = 0; c < _ShapeCounts.x; c++)
+    float3 below = x - DomainMin, above = DomainMax - x;
+    float weight = FaceNoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
+        + FaceNoSlip.y * (NoSlipWallIntegral(below.y) + NoSlipWallIntegral(above.y))
+        + FaceNoSlip.z * (NoSlipWallIntegral(below.z) + NoSlipWallIntegral(above.z));
+    if (ColliderNoSlip > 0.0)
+        for (uint c = 0; c < ColliderCount; c++)
         {
             float3 normal; float depth; bool deep;
-            if (Penetration(LoadShape(c), x, _Kernel.x, normal, depth, deep))
-                weight += _NoSlip.w * NoSlipWallIntegral(_Kernel.x - depth);
+            if (Penetration(LoadShape(c), x, SmoothingLength, normal, depth, deep))
+                weight += ColliderNoSlip * NoSlipWallIntegral(SmoothingLength - depth);
         }
     return weight;
 }
@@ -115,18 +115,18 @@ float NoSlipWeight(float3 x)
 // with the faces' friction μ per axis, cancels the motion along them since start by at most Σ μ_axis × depth_axis (and the velocity by that share).
 void ClampToDomain(inout float3 x, inout float3 v, float3 start)
 {
-    float3 lo = _DomainMin.xyz + _DomainMin.w;
-    float3 hi = _DomainMax.xyz - _DomainMin.w;
-    if (_Period.w != 0.0)
+    float3 lo = DomainMin + WallDistance;
+    float3 hi = DomainMax - WallDistance;
+    if (IsPeriodic != 0.0)
     {
         // Periodic axes wrap by whole periods (FluidConstants.Wrap) instead; the motion since start is the nearest image's.
         float3 wrapped = x;
         [unroll] for (int p = 0; p < 3; p++)
-            if (_Period[p] > 0.0) wrapped[p] -= _Period[p] * floor((x[p] - _DomainMin[p]) * _InversePeriod[p]);
+            if (Period[p] > 0.0) wrapped[p] -= Period[p] * floor((x[p] - DomainMin[p]) * InversePeriod[p]);
         start += wrapped - x;
         x = wrapped;
-        lo = _Period.xyz > 0.0 ? -FLOAT_MAX : lo;
-        hi = _Period.xyz > 0.0 ? FLOAT_MAX : hi;
+        lo = Period > 0.0 ? -FLOAT_MAX : lo;
+        hi = Period > 0.0 ? FLOAT_MAX : hi;
     }
     float3 clamped = clamp(x, lo, hi);
     if (all(clamped == x)) return;
@@ -137,7 +137,7 @@ void ClampToDomain(inout float3 x, inout float3 v, float3 start)
         else if (x[a] > hi[a]) v[a] = min(v[a], 0.0);
     }
     x = clamped;
-    float limit = dot(_Colliding.yzw, depth);
+    float limit = dot(DomainFriction, depth);
     if (limit > 0.0)
     {
         float3 along = float3(depth.x > 0.0 ? 0.0 : 1.0, depth.y > 0.0 ? 0.0 : 1.0, depth.z > 0.0 ? 0.0 : 1.0);

@@ -3,6 +3,8 @@
 #ifndef SBD_SOFT_BODY_COMMON_INCLUDED
 #define SBD_SOFT_BODY_COMMON_INCLUDED
 
+#include "SoftBodyComputeConstants.hlsl"
+
 #define SOFT_BODY_GROUP 256
 
 RWStructuredBuffer<float4> _X;              // positions at the start of the substep (m)
@@ -20,7 +22,7 @@ RWStructuredBuffer<float4> _ClusterRest;    // per cluster: rest centre (m), tot
 RWStructuredBuffer<float4> _ClusterCenters; // per cluster: centre of the positions (m)
 RWStructuredBuffer<float4> _ClusterApq;     // per cluster: A_pq as three columns
 
-float4 _Step;    // x substep h (s), y 1/h², z 1/h, w unused
+// Per-dispatch argument (set before each dispatch, SoftBodyComputeStep).
 uint4 _Range;    // x first, y end (colour range in _ColorSprings, or the particle / spring / cluster count in x), zw unused
 
 #endif

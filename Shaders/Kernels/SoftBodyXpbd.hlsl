@@ -13,7 +13,7 @@ void XpbdPredict(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= _Range.x) return;
-    _P[i] = float4(_X[i].xyz + _Step.x * _V[i].xyz, 0.0);
+    _P[i] = float4(_X[i].xyz + SubstepSeconds * _V[i].xyz, 0.0);
 }
 
 // λ = 0 at the start of a substep.
@@ -52,8 +52,8 @@ void XpbdProjectColor(uint3 id : SV_DispatchThreadID)
     float len;
     float3 n = -Direction(pA, pB, _Rest[a].xyz, _Rest[b].xyz, restLength, len);
     float c = len - restLength;
-    float alphaTilde = _Step.y / stiffness;
-    float gamma = damping / (stiffness * _Step.x);
+    float alphaTilde = InverseSubstepSquared / stiffness;
+    float gamma = damping / (stiffness * SubstepSeconds);
     float lambda = _Multipliers[e];
     float rate = dot(n, (pA - _X[a].xyz) - (pB - _X[b].xyz));
     float dLambda = (-c - alphaTilde * lambda - gamma * rate) / ((1.0 + gamma) * (wA + wB) + alphaTilde);
@@ -68,7 +68,7 @@ void XpbdVelocities(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= _Range.x) return;
-    _V[i] = float4((_P[i].xyz - _X[i].xyz) * _Step.z, 0.0);
+    _V[i] = float4((_P[i].xyz - _X[i].xyz) * InverseSubstep, 0.0);
 }
 
 #endif

@@ -18,6 +18,16 @@ namespace SoftBodyDynamics.Lavapipe
         public bool Uniform;
     }
 
+    /// <summary>A named constant buffer (HLSL <c>cbuffer</c>) of a kernel, from its SPIR-V's reflection.</summary>
+    public sealed class ConstantBlock
+    {
+        public string Name;
+        /// <summary>Bytes up to the end of the last member.</summary>
+        public int Size;
+        /// <summary>The members in declaration order: name, reflected type (spirv-cross: float, vec3, uint, ivec3…), byte offset.</summary>
+        public List<(string Name, string Type, int Offset)> Members = new List<(string, string, int)>();
+    }
+
     /// <summary>One kernel of a .compute file compiled to SPIR-V, with what reflection says of it.</summary>
     public sealed class CompiledKernel
     {
@@ -28,6 +38,8 @@ namespace SoftBodyDynamics.Lavapipe
         /// <summary>Members of the loose-globals block ($Global): name → byte offset.</summary>
         public Dictionary<string, int> GlobalOffsets = new Dictionary<string, int>();
         public int GlobalBlockSize;
+        /// <summary>The named constant buffers the kernel reads, by name (bound like Unity's ComputeShader.SetConstantBuffer).</summary>
+        public Dictionary<string, ConstantBlock> ConstantBlocks = new Dictionary<string, ConstantBlock>();
     }
 
     /// <summary>
@@ -101,12 +113,18 @@ namespace SoftBodyDynamics.Lavapipe
                 {
                     string ubo = b.GetProperty("name").GetString();
                     k.Bindings.Add(new KernelBinding { Name = ubo, Binding = Binding(b), Uniform = true });
-                    if (ubo != "$Global")
-                        throw new InvalidOperationException($"{name}: only loose globals ($Global) are supported, found cbuffer {ubo}");
-                    k.GlobalBlockSize = b.GetProperty("block_size").GetInt32();
                     JsonElement type = root.GetProperty("types").GetProperty(b.GetProperty("type").GetString());
+                    if (ubo == "$Global")
+                    {
+                        k.GlobalBlockSize = b.GetProperty("block_size").GetInt32();
+                        foreach (JsonElement m in type.GetProperty("members").EnumerateArray())
+                            k.GlobalOffsets[m.GetProperty("name").GetString()] = m.GetProperty("offset").GetInt32();
+                        continue;
+                    }
+                    var block = new ConstantBlock { Name = ubo, Size = b.GetProperty("block_size").GetInt32() };
                     foreach (JsonElement m in type.GetProperty("members").EnumerateArray())
-                        k.GlobalOffsets[m.GetProperty("name").GetString()] = m.GetProperty("offset").GetInt32();
+                        block.Members.Add((m.GetProperty("name").GetString(), m.GetProperty("type").GetString(), m.GetProperty("offset").GetInt32()));
+                    k.ConstantBlocks[ubo] = block;
                 }
             return k;
         }

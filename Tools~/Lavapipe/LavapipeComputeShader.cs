@@ -8,7 +8,8 @@ namespace SoftBodyDynamics.Lavapipe
     /// <summary>
     /// Unity's <c>ComputeShader</c> on lavapipe: kernels found by name, buffers bound per kernel by name (the binding
     /// numbers come from each kernel's reflection), loose globals set by name and packed by the reflected offsets into a
-    /// uniform block per dispatch. Dispatches are recorded until <see cref="Submit"/>.
+    /// uniform block per dispatch, named constant buffers (HLSL <c>cbuffer</c>) bound as uniform buffers by name. Dispatches
+    /// are recorded until <see cref="Submit"/>.
     /// </summary>
     public sealed unsafe class LavapipeComputeShader : IDisposable
     {
@@ -19,12 +20,22 @@ namespace SoftBodyDynamics.Lavapipe
             public LavapipeBuffer[] Buffers;
             public int GlobalSlot = -1;
             public (int Global, int Offset)[] GlobalLayout;
+            /// <summary>The binding slots of the kernel's named constant buffers, with their names.</summary>
+            public List<(int Slot, string Name)> ConstantSlots = new List<(int, string)>();
+        }
+
+        /// <summary>A constant buffer's bytes and where they sit in the arena until the next submit.</summary>
+        sealed class Constants
+        {
+            public byte[] Data;
+            public long Offset;
         }
 
         readonly LavapipeDevice m_Device;
         readonly List<Kernel> m_Kernels = new List<Kernel>();
         readonly Dictionary<string, int> m_GlobalIndex = new Dictionary<string, int>();
         readonly List<(float4 Value, bool Set)> m_Globals = new List<(float4, bool)>();
+        readonly Dictionary<string, Constants> m_Constants = new Dictionary<string, Constants>();
         readonly LavapipeBuffer m_Arena;
         long m_ArenaCursor;
         const long ArenaBytes = 8 << 20;
@@ -50,8 +61,10 @@ namespace SoftBodyDynamics.Lavapipe
                 {
                     bindings[b] = ck.Bindings[b].Binding;
                     kinds[b] = ck.Bindings[b].Uniform ? 1 : 0;
-                    if (ck.Bindings[b].Uniform)
+                    if (ck.Bindings[b].Uniform && ck.Bindings[b].Name == "$Global")
                         k.GlobalSlot = b;
+                    else if (ck.Bindings[b].Uniform)
+                        k.ConstantSlots.Add((b, ck.Bindings[b].Name));
                 }
                 int rc;
                 fixed (byte* code = ck.Spirv)
@@ -110,6 +123,37 @@ namespace SoftBodyDynamics.Lavapipe
         public void SetInts(string name, int4 value) =>
             m_Globals[GlobalIndex(name)] = (new float4(math.asfloat(value.x), math.asfloat(value.y), math.asfloat(value.z), math.asfloat(value.w)), true);
 
+        /// <summary>
+        /// ComputeShader.SetConstantBuffer of a <c>GraphicsBuffer.Target.Constant</c> buffer just filled with
+        /// <paramref name="value"/> by GraphicsBuffer.SetData: the cbuffer <paramref name="name"/> of every kernel reads
+        /// these bytes from the next dispatch on. The bytes are copied now, so dispatches recorded before keep the
+        /// earlier contents, in the order Unity runs SetData and dispatches.
+        /// </summary>
+        public void SetConstantBuffer<T>(string name, in T value) where T : unmanaged
+        {
+            var data = new byte[sizeof(T)];
+            MemoryMarshal.Write(data, in value);
+            if (data.Length % 16 != 0)
+                throw new ArgumentException($"constant buffer {name}: {data.Length} bytes is not a multiple of 16");
+            var constants = new Constants { Data = data };
+            Place(constants);
+            m_Constants[name] = constants;
+        }
+
+        /// <summary>Copies a constant buffer's bytes to the next aligned block of the arena.</summary>
+        void Place(Constants constants)
+        {
+            long size = Aligned(constants.Data.Length);
+            if (m_ArenaCursor + size > m_Arena.Bytes)
+                throw new InvalidOperationException("uniform arena full: submit more often");
+            constants.Data.CopyTo(m_Arena.As<byte>().Slice((int)m_ArenaCursor, constants.Data.Length));
+            constants.Offset = m_ArenaCursor;
+            m_ArenaCursor += size;
+        }
+
+        // 256 bytes: the largest minUniformBufferOffsetAlignment Vulkan allows, so every block offset is aligned.
+        static long Aligned(long bytes) => (bytes + 255) & ~255L;
+
         public void Dispatch(int kernel, int groupsX, int groupsY = 1, int groupsZ = 1) => Record(kernel, (uint)groupsX, (uint)groupsY, (uint)groupsZ, null, 0);
 
         /// <summary>ComputeShader.DispatchIndirect with the group counts at <paramref name="offsetBytes"/> of <paramref name="args"/>.</summary>
@@ -124,8 +168,7 @@ namespace SoftBodyDynamics.Lavapipe
             ulong* ranges = stackalloc ulong[Math.Max(n, 1)];
             if (k.GlobalSlot >= 0)
             {
-                // 256 bytes: the largest minUniformBufferOffsetAlignment Vulkan allows, so every block offset is aligned.
-                long size = (k.Compiled.GlobalBlockSize + 255) & ~255L;
+                long size = Aligned(k.Compiled.GlobalBlockSize);
                 if (m_ArenaCursor + size > m_Arena.Bytes)
                     throw new InvalidOperationException("uniform arena full: submit more often");
                 Span<byte> block = m_Arena.As<byte>().Slice((int)m_ArenaCursor, k.Compiled.GlobalBlockSize);
@@ -142,12 +185,23 @@ namespace SoftBodyDynamics.Lavapipe
                 ranges[k.GlobalSlot] = (ulong)k.Compiled.GlobalBlockSize;
                 m_ArenaCursor += size;
             }
+            foreach (var (slot, name) in k.ConstantSlots)
+            {
+                if (!m_Constants.TryGetValue(name, out Constants constants))
+                    throw new InvalidOperationException($"{k.Compiled.Name}: constant buffer {name} is not set");
+                int declared = k.Compiled.ConstantBlocks[name].Size;
+                if (constants.Data.Length < declared)
+                    throw new InvalidOperationException($"{k.Compiled.Name}: constant buffer {name} has {constants.Data.Length} bytes, the kernel reads {declared}");
+                k.Buffers[slot] = m_Arena;
+                offsets[slot] = (ulong)constants.Offset;
+                ranges[slot] = (ulong)constants.Data.Length;
+            }
             for (int b = 0; b < n; b++)
             {
                 if (k.Buffers[b] == null)
                     throw new InvalidOperationException($"{k.Compiled.Name}: buffer {k.Compiled.Bindings[b].Name} is not set");
                 handles[b] = k.Buffers[b].Handle;
-                if (b != k.GlobalSlot)
+                if (!k.Compiled.Bindings[b].Uniform)
                 {
                     offsets[b] = 0;
                     ranges[b] = 0;
@@ -168,6 +222,9 @@ namespace SoftBodyDynamics.Lavapipe
             double ms = m_Device.Submit();
             m_ArenaCursor = 0;
             Recorded = 0;
+            // The constant buffers stay bound: their bytes move to the start of the emptied arena.
+            foreach (Constants constants in m_Constants.Values)
+                Place(constants);
             return ms;
         }
 

@@ -226,7 +226,7 @@ namespace SoftBodyDynamics.Lavapipe
         /// <summary>Runs what was recorded.</summary>
         public double Flush() => m_Shader.Submit();
 
-        public void SetVector(FluidComputeGlobal name, float4 value) => m_Shader.SetVector(m_GlobalNames[(int)name], value);
+        public void SetConstants(in FluidComputeConstants constants) => m_Shader.SetConstantBuffer(FluidComputeConstants.BufferName, constants);
         public void SetInts(FluidComputeGlobal name, int4 value) => m_Shader.SetInts(m_GlobalNames[(int)name], value);
 
         public void Dispatch(FluidKernel kernel, int threads)

@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Lavapipe
 
         public LavapipeBuffer Buffer(SoftBodyComputeBuffer buffer) => m_Buffers[(int)buffer];
 
-        public void SetVector(SoftBodyComputeGlobal name, float4 value) => m_Shader.SetVector(m_Globals[(int)name], value);
+        public void SetConstants(in SoftBodyComputeConstants constants) => m_Shader.SetConstantBuffer(SoftBodyComputeConstants.BufferName, constants);
         public void SetInts(SoftBodyComputeGlobal name, int4 value) => m_Shader.SetInts(m_Globals[(int)name], value);
 
         public void Dispatch(SoftBodyKernel kernel, int threads)

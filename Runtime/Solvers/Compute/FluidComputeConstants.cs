@@ -1,20 +1,102 @@
+using System.Runtime.InteropServices;
 using Unity.Mathematics;
 
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// The constants of the fluid kernels (the float4 / uint4 globals of FluidCommon.hlsl), computed on the CPU from a
-    /// fluid's <see cref="FluidConstants"/>, the substep h and the step dt.
+    /// The constants of the fluid kernels, computed on the CPU from a fluid's <see cref="FluidConstants"/>, the substep h
+    /// and the step dt, and uploaded whole as the kernels' constant buffer: the C# side of
+    /// <c>Shaders/Kernels/FluidComputeConstants.hlsl</c>, with the same fields in the same order at the same byte offsets
+    /// (HLSL constant-buffer packing: 16-byte rows, a float3 and a scalar per row where a vector is needed).
     /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
     public struct FluidComputeConstants
     {
-        public float4 GridOrigin, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Colliding;
-        /// <summary>xyz the periodic axes' periods (0 elsewhere), w 1 when any axis is periodic; xyz their inverses; xyz the faces' no-slip shares (0 on periodic axes).</summary>
-        public float4 Period, InversePeriod, NoSlip;
-        /// <summary>x <see cref="FluidConstants.GradientTraceScale"/>, y <see cref="FluidConstants.GradientWallScale"/>, z <see cref="FluidConstants.MaxGradientRenormalization"/>.</summary>
-        public float4 Renormalization;
-        /// <summary>x colliders, y drains in <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeStep.PackShapes"/>).</summary>
-        public int4 GridDims, Flags, ShapeCounts;
+        /// <summary>Bytes of the constant buffer: a multiple of 16, as constant buffers require.</summary>
+        public const int Bytes = 272;
+        /// <summary>The constant buffer's name in HLSL (its shader property).</summary>
+        public const string BufferName = "FluidComputeConstants";
+
+        /// <summary>Grid origin (m).</summary>
+        public float3 GridOrigin;
+        /// <summary>1 / cell size (1/m).</summary>
+        public float InverseCellSize;
+        /// <summary>Cells along each axis.</summary>
+        public int3 GridDimensions;
+        /// <summary>Cells in all (the dead key).</summary>
+        public uint CellCount;
+        public float3 DomainMin;
+        public float WallDistance;
+        public float3 DomainMax;
+        /// <summary>The walls' density scale κ.</summary>
+        public float WallScale;
+        public float3 Gravity;
+        /// <summary>Position-based artificial pressure k·λ₁ (m²).</summary>
+        public float ArtificialPressureScale;
+        /// <summary>Kernel radius H (m).</summary>
+        public float SmoothingLength;
+        public float SmoothingLengthSquared;
+        public float Poly6Coefficient;
+        public float SpikyGradientCoefficient;
+        public float CohesionCoefficient;
+        public float CohesionOffset;
+        public float ViscosityLaplacianCoefficient;
+        /// <summary>Gradient correction κ∇.</summary>
+        public float GradientCorrection;
+        public float ParticleMass;
+        /// <summary>ρ₀ (kg/m³).</summary>
+        public float RestDensity;
+        /// <summary>Tait B (Pa).</summary>
+        public float TaitStiffness;
+        public float MaxDensityRatio;
+        /// <summary>Substep h (s).</summary>
+        public float SubstepSeconds;
+        public float MaxSpeed;
+        /// <summary>2·α·c₀·H.</summary>
+        public float ArtificialViscosity;
+        /// <summary>Position-based relaxation ε.</summary>
+        public float Relaxation;
+        public float CohesionWeight;
+        public float SeparationWeight;
+        public float ParticleSpacing;
+        public float SurfaceTension;
+        /// <summary>h·ν·2m·(Laplacian coefficient)·(viscosity correction).</summary>
+        public float ViscosityScale;
+        /// <summary>1 − e^(−rate·h).</summary>
+        public float AlignmentBlend;
+        /// <summary>Step dt (s).</summary>
+        public float StepSeconds;
+        public float BulkPressureScale;
+        /// <summary>1 for the weakly compressible solver, 0 for position-based.</summary>
+        public uint WeaklyCompressible;
+        /// <summary>1 when flocking cohesion acts.</summary>
+        public uint Flocking;
+        /// <summary>1 when Akinci surface tension acts.</summary>
+        public uint Akinci;
+        /// <summary>Colliders at the start of <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeStep.PackShapes"/>).</summary>
+        public uint ColliderCount;
+        /// <summary>The domain faces' friction μ per axis.</summary>
+        public float3 DomainFriction;
+        public float ColliderFriction;
+        /// <summary>The domain's extent on its periodic axes (m), 0 on the others.</summary>
+        public float3 Period;
+        /// <summary>1 when any axis is periodic.</summary>
+        public float IsPeriodic;
+        /// <summary>1 / the period on the periodic axes (1/m), 0 on the others.</summary>
+        public float3 InversePeriod;
+        /// <summary>Drains in <see cref="FluidComputeBuffer.Shapes"/> after the colliders.</summary>
+        public uint DrainCount;
+        /// <summary>No-slip share of the domain faces per axis (0 on periodic axes).</summary>
+        public float3 FaceNoSlip;
+        public float ColliderNoSlip;
+        /// <summary><see cref="FluidConstants.GradientTraceScale"/>.</summary>
+        public float GradientTraceScale;
+        /// <summary><see cref="FluidConstants.GradientWallScale"/>.</summary>
+        public float GradientWallScale;
+        /// <summary><see cref="FluidConstants.MaxGradientRenormalization"/>.</summary>
+        public float MaxGradientRenormalization;
+        /// <summary>Fills the last 16-byte row.</summary>
+        public float Unused;
 
         /// <summary>
         /// The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds, with
@@ -29,50 +111,57 @@ namespace SoftBodyDynamics.Solvers
             bool akinci = p.Cohesion == FluidCohesionModel.Akinci && p.SurfaceTension > 0f;
             return new FluidComputeConstants
             {
-                GridOrigin = new float4(g.Origin, g.InverseCellSize),
-                GridDims = new int4(g.Dimensions.x, g.Dimensions.y, g.Dimensions.z, g.CellCount),
-                DomainMin = new float4(p.DomainMin, c.WallDistance),
-                DomainMax = new float4(p.DomainMax, c.WallScale),
-                Gravity = new float4(p.Gravity, c.ArtificialPressureScale),
-                Kernel = new float4(k.H, k.H2, k.Poly6Coefficient, k.SpikyGradientCoefficient),
-                Kernel2 = new float4(k.CohesionCoefficient, k.CohesionOffset, k.ViscosityLaplacianCoefficient, c.GradientCorrection),
-                Material = new float4(c.Mass, p.RestDensity, c.TaitStiffness, p.MaxDensityRatio),
-                Motion = new float4(h, p.MaxSpeed, 2f * p.ArtificialViscosity * p.SpeedOfSound * k.H, c.Relaxation),
-                Cohesion = new float4(p.CohesionWeight, p.SeparationWeight, p.ParticleSpacing, p.SurfaceTension),
+                GridOrigin = g.Origin,
+                InverseCellSize = g.InverseCellSize,
+                GridDimensions = g.Dimensions,
+                CellCount = (uint)g.CellCount,
+                DomainMin = p.DomainMin,
+                WallDistance = c.WallDistance,
+                DomainMax = p.DomainMax,
+                WallScale = c.WallScale,
+                Gravity = p.Gravity,
+                ArtificialPressureScale = c.ArtificialPressureScale,
+                SmoothingLength = k.H,
+                SmoothingLengthSquared = k.H2,
+                Poly6Coefficient = k.Poly6Coefficient,
+                SpikyGradientCoefficient = k.SpikyGradientCoefficient,
+                CohesionCoefficient = k.CohesionCoefficient,
+                CohesionOffset = k.CohesionOffset,
+                ViscosityLaplacianCoefficient = k.ViscosityLaplacianCoefficient,
+                GradientCorrection = c.GradientCorrection,
+                ParticleMass = c.Mass,
+                RestDensity = p.RestDensity,
+                TaitStiffness = c.TaitStiffness,
+                MaxDensityRatio = p.MaxDensityRatio,
+                SubstepSeconds = h,
+                MaxSpeed = p.MaxSpeed,
+                ArtificialViscosity = 2f * p.ArtificialViscosity * p.SpeedOfSound * k.H,
+                Relaxation = c.Relaxation,
+                CohesionWeight = p.CohesionWeight,
+                SeparationWeight = p.SeparationWeight,
+                ParticleSpacing = p.ParticleSpacing,
+                SurfaceTension = p.SurfaceTension,
                 // The same expressions as FluidPasses.ViscosityIteration and Alignment, so the GPU gets the CPU's bits.
-                Smoothing = new float4(h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient * c.ViscosityCorrection,
-                    1f - math.exp(-p.AlignmentRate * h), dt, c.BulkPressureScale),
-                Flags = new int4(p.Solver == FluidSolverKind.WeaklyCompressible ? 1 : 0, flocking ? 1 : 0, akinci ? 1 : 0, 0),
-                ShapeCounts = new int4(colliders, drains, 0, 0),
-                Colliding = new float4(p.WallFriction, p.DomainFriction.x, p.DomainFriction.y, p.DomainFriction.z),
-                Period = new float4(c.Period, c.IsPeriodic ? 1f : 0f),
-                InversePeriod = new float4(c.InversePeriod, 0f),
-                NoSlip = new float4(c.FaceNoSlip, p.WallNoSlip),
-                Renormalization = new float4(c.GradientTraceScale, c.GradientWallScale, FluidConstants.MaxGradientRenormalization, 0f),
+                ViscosityScale = h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient * c.ViscosityCorrection,
+                AlignmentBlend = 1f - math.exp(-p.AlignmentRate * h),
+                StepSeconds = dt,
+                BulkPressureScale = c.BulkPressureScale,
+                WeaklyCompressible = p.Solver == FluidSolverKind.WeaklyCompressible ? 1u : 0u,
+                Flocking = flocking ? 1u : 0u,
+                Akinci = akinci ? 1u : 0u,
+                ColliderCount = (uint)colliders,
+                DomainFriction = p.DomainFriction,
+                ColliderFriction = p.WallFriction,
+                Period = c.Period,
+                IsPeriodic = c.IsPeriodic ? 1f : 0f,
+                InversePeriod = c.InversePeriod,
+                DrainCount = (uint)drains,
+                FaceNoSlip = c.FaceNoSlip,
+                ColliderNoSlip = p.WallNoSlip,
+                GradientTraceScale = c.GradientTraceScale,
+                GradientWallScale = c.GradientWallScale,
+                MaxGradientRenormalization = FluidConstants.MaxGradientRenormalization,
             };
-        }
-
-        /// <summary>Sets every constant on <paramref name="commands"/>.</summary>
-        public void Set<T>(ref T commands) where T : IFluidComputeCommands
-        {
-            commands.SetVector(FluidComputeGlobal.GridOrigin, GridOrigin);
-            commands.SetInts(FluidComputeGlobal.GridDims, GridDims);
-            commands.SetVector(FluidComputeGlobal.DomainMin, DomainMin);
-            commands.SetVector(FluidComputeGlobal.DomainMax, DomainMax);
-            commands.SetVector(FluidComputeGlobal.Gravity, Gravity);
-            commands.SetVector(FluidComputeGlobal.Kernel, Kernel);
-            commands.SetVector(FluidComputeGlobal.Kernel2, Kernel2);
-            commands.SetVector(FluidComputeGlobal.Material, Material);
-            commands.SetVector(FluidComputeGlobal.Motion, Motion);
-            commands.SetVector(FluidComputeGlobal.Cohesion, Cohesion);
-            commands.SetVector(FluidComputeGlobal.Smoothing, Smoothing);
-            commands.SetInts(FluidComputeGlobal.Flags, Flags);
-            commands.SetInts(FluidComputeGlobal.ShapeCounts, ShapeCounts);
-            commands.SetVector(FluidComputeGlobal.Colliding, Colliding);
-            commands.SetVector(FluidComputeGlobal.Period, Period);
-            commands.SetVector(FluidComputeGlobal.InversePeriod, InversePeriod);
-            commands.SetVector(FluidComputeGlobal.NoSlip, NoSlip);
-            commands.SetVector(FluidComputeGlobal.Renormalization, Renormalization);
         }
     }
 }

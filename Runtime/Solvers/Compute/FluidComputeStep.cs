@@ -14,7 +14,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Zeroes the step's counters, ages the particles by dt and finds the fastest speed (read back for the substeps).</summary>
         public static void RecordBegin<T>(ref T commands, in FluidComputeConstants constants) where T : IFluidComputeCommands
         {
-            constants.Set(ref commands);
+            commands.SetConstants(constants);
             commands.Dispatch(FluidKernel.ClearStats, FluidComputeLayout.StatCount);
             commands.DispatchIndirect(FluidKernel.BeginStep);
         }
@@ -45,13 +45,13 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Marks the live particles inside a drain (<see cref="FluidDrain.Apply"/>): the next sort removes them. The drains
-        /// are the shapes after the colliders in <see cref="FluidComputeBuffer.Shapes"/> (the constants' ShapeCounts).
+        /// are the shapes after the colliders in <see cref="FluidComputeBuffer.Shapes"/> (<see cref="FluidComputeConstants.DrainCount"/>).
         /// </summary>
         public static void RecordDrain<T>(ref T commands, in FluidComputeConstants constants) where T : IFluidComputeCommands
         {
-            if (constants.ShapeCounts.y <= 0)
+            if (constants.DrainCount == 0)
                 return;
-            constants.Set(ref commands);
+            commands.SetConstants(constants);
             commands.DispatchIndirect(FluidKernel.Drain);
         }
 
@@ -62,7 +62,7 @@ namespace SoftBodyDynamics.Solvers
         public static void RecordSubsteps<T>(ref T commands, in FluidConstants c, in FluidComputeConstants constants, int substeps,
             ReadOnlySpan<FluidPass> passes) where T : IFluidComputeCommands
         {
-            constants.Set(ref commands);
+            commands.SetConstants(constants);
             for (int s = 0; s < substeps; s++)
                 for (int q = 0; q < passes.Length; q++)
                     RecordPass(ref commands, c, passes[q]);

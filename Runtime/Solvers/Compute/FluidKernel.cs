@@ -22,10 +22,15 @@ namespace SoftBodyDynamics.Solvers
         RenderParticles,
     }
 
-    /// <summary>The constants of the fluid kernels (float4 or int4 globals); the shader property is "_" + the name.</summary>
+    /// <summary>
+    /// The per-dispatch arguments of the fluid kernels (uint4 loose globals, set before the dispatches that read them);
+    /// the shader property is "_" + the name. The step's constants are <see cref="FluidComputeConstants"/>.
+    /// </summary>
     public enum FluidComputeGlobal : byte
     {
-        GridOrigin, GridDims, DomainMin, DomainMax, Gravity, Kernel, Kernel2, Material, Motion, Cohesion, Smoothing, Flags, Counts, Scan, ShapeCounts, Colliding,
-        Period, InversePeriod, NoSlip, Renormalization,
+        /// <summary>x capacity, y spawn count, z scan element count, w scan data offset.</summary>
+        Counts,
+        /// <summary>x index of the scan level's block totals in <see cref="FluidComputeBuffer.ScanSums"/>.</summary>
+        Scan,
     }
 }

@@ -3,16 +3,19 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// What <see cref="FluidComputeStep"/> asks of a GPU backend: set a constant, dispatch a kernel over a thread count
+    /// What <see cref="FluidComputeStep"/> asks of a GPU backend: upload the constants, set a dispatch's arguments, dispatch a kernel over a thread count
     /// known on the CPU or over the live particles (indirect, the count being known only on the GPU). The backend binds
     /// every <see cref="FluidComputeBuffer"/> to every kernel by name once (and again when a buffer grows). Unity's
     /// implementation drives a <c>ComputeShader</c>; the test harness drives the same kernels on lavapipe.
     /// </summary>
     public interface IFluidComputeCommands
     {
-        /// <summary>Sets a float4 constant for the dispatches that follow.</summary>
-        void SetVector(FluidComputeGlobal name, float4 value);
-        /// <summary>Sets a uint4 constant (as int4 bits) for the dispatches that follow.</summary>
+        /// <summary>
+        /// Uploads <paramref name="constants"/> whole (<see cref="FluidComputeConstants.Bytes"/> bytes) and binds them as
+        /// the kernels' constant buffer <see cref="FluidComputeConstants.BufferName"/> for the dispatches that follow.
+        /// </summary>
+        void SetConstants(in FluidComputeConstants constants);
+        /// <summary>Sets a per-dispatch uint4 argument (as int4 bits) for the dispatches that follow.</summary>
         void SetInts(FluidComputeGlobal name, int4 value);
         /// <summary>Dispatches ⌈<paramref name="threads"/> / group size⌉ groups (none for 0), the group size reflected from the kernel.</summary>
         void Dispatch(FluidKernel kernel, int threads);

@@ -13,13 +13,25 @@ namespace SoftBodyDynamics.Solvers
         ClusterCenters, ClusterApq,
     }
 
-    /// <summary>The constants of the soft-body kernels; the shader property is "_" + the name.</summary>
-    public enum SoftBodyComputeGlobal : byte { Step, Range }
+    /// <summary>
+    /// The per-dispatch arguments of the soft-body kernels (uint4 loose globals); the shader property is "_" + the name.
+    /// The substep's constants are <see cref="SoftBodyComputeConstants"/>.
+    /// </summary>
+    public enum SoftBodyComputeGlobal : byte
+    {
+        /// <summary>x first, y end (a colour's range in <see cref="SoftBodyComputeBuffer.ColorSprings"/>), or the particle, spring or cluster count in x.</summary>
+        Range,
+    }
 
     /// <summary>What <see cref="SoftBodyComputeStep"/> asks of a GPU backend (Unity's ComputeShader or the lavapipe harness).</summary>
     public interface ISoftBodyComputeCommands
     {
-        void SetVector(SoftBodyComputeGlobal name, float4 value);
+        /// <summary>
+        /// Uploads <paramref name="constants"/> whole (<see cref="SoftBodyComputeConstants.Bytes"/> bytes) and binds them as
+        /// the kernels' constant buffer <see cref="SoftBodyComputeConstants.BufferName"/> for the dispatches that follow.
+        /// </summary>
+        void SetConstants(in SoftBodyComputeConstants constants);
+        /// <summary>Sets a per-dispatch uint4 argument (as int4 bits) for the dispatches that follow.</summary>
         void SetInts(SoftBodyComputeGlobal name, int4 value);
         /// <summary>Dispatches ⌈<paramref name="threads"/> / group size⌉ groups (none for 0).</summary>
         void Dispatch(SoftBodyKernel kernel, int threads);
@@ -44,7 +56,7 @@ namespace SoftBodyDynamics.Solvers
         public static void RecordXpbdSubstep<T>(ref T commands, int particles, int springs, ReadOnlySpan<int> colorOffsets, int iterations, float h)
             where T : ISoftBodyComputeCommands
         {
-            commands.SetVector(SoftBodyComputeGlobal.Step, new float4(h, 1f / (h * h), 1f / h, 0f));
+            commands.SetConstants(SoftBodyComputeConstants.Of(h));
             commands.SetInts(SoftBodyComputeGlobal.Range, new int4(particles, 0, 0, 0));
             commands.Dispatch(SoftBodyKernel.XpbdPredict, particles);
             commands.SetInts(SoftBodyComputeGlobal.Range, new int4(springs, 0, 0, 0));

@@ -50,7 +50,7 @@ static class Program
             for (int r = 0; r <= repeats; r++)
             {
                 g.Upload(b.Particles, b.Status.Count);
-                constants.Set(ref commands);
+                commands.SetConstants(constants);
                 foreach (FluidPass pass in passes)
                 {
                     double before = g.KernelMilliseconds.Values.Sum(v => v.Milliseconds);

@@ -123,7 +123,7 @@ namespace SoftBodyDynamics.Tests.Compute
             {
                 FluidPass pass = passes[q];
                 GpuState.Upload(g, cpu, count, cells);
-                constants.Set(ref gpu);
+                gpu.SetConstants(constants);
                 FluidComputeStep.RecordPass(ref gpu, c, pass);
                 g.Flush();
                 Lavapipe.AssertValid();

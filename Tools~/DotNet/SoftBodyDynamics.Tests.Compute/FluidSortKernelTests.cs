@@ -68,7 +68,7 @@ namespace SoftBodyDynamics.Tests.Compute
             int live = FluidSolver.SortParticles(c, cpu.Particles, cpu.Scratch, count, false, ref counters);
 
             var gpu = g;
-            FluidComputeConstants.Of(c, 0f, 0f).Set(ref gpu);
+            gpu.SetConstants(FluidComputeConstants.Of(c, 0f, 0f));
             FluidComputeStep.RecordSort(ref gpu, cells, false);
             g.Flush();
             Lavapipe.AssertValid();

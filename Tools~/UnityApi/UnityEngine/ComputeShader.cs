@@ -24,6 +24,9 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/ComputeShader.SetInts.html
         public void SetInts(int nameID, params int[] values) => throw null;
 
+        // https://docs.unity3d.com/ScriptReference/ComputeShader.SetConstantBuffer.html
+        public void SetConstantBuffer(int nameID, GraphicsBuffer buffer, int offset, int size) => throw null;
+
         // https://docs.unity3d.com/ScriptReference/ComputeShader.Dispatch.html
         public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) => throw null;
 
