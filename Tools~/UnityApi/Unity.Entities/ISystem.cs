@@ -29,6 +29,8 @@ namespace Unity.Entities
         public JobHandle Dependency { get => throw null; set => throw null; }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.CompleteDependency.html
         public void CompleteDependency() => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.Enabled.html
+        public bool Enabled { get => throw null; set => throw null; }
         // https://docs.unity3d.com/Packages/com.unity.entities@1.4/api/Unity.Entities.SystemState.LastSystemVersion.html
         // (source: SystemState.cs, 1.4.2: public uint LastSystemVersion => m_LastSystemVersion;)
         public uint LastSystemVersion => throw null;
