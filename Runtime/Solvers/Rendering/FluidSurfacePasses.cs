@@ -80,15 +80,17 @@ namespace SoftBodyDynamics.Solvers
         static bool Covers(int4 rect, int tx, int ty) => rect.x <= rect.z && tx >= rect.x && tx <= rect.z && ty >= rect.y && ty <= rect.w;
 
         /// <summary>SplatDepth: eye depth of the nearest sphere per depth pixel, 0 where none.</summary>
-        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth)
+        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth) =>
+            SplatDepth(k, particles, depth, new int4[k.ParticleCount], new float4[k.ParticleCount]);
+
+        /// <summary>SplatDepth with the caller's scratch (<see cref="FluidSurfaceConstants.ParticleCount"/> entries each): allocates nothing.</summary>
+        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth, Span<int4> rects, Span<float4> centres)
         {
             int n = k.ParticleCount, w = k.DepthSize.x;
-            var rects = new int4[n];
-            var centres = new float3[n];
             for (int i = 0; i < n; i++)
             {
                 rects[i] = TileRect(k, particles[i].xyz);
-                centres[i] = ToView(k, particles[i].xyz);
+                centres[i] = new float4(ToView(k, particles[i].xyz), 0f);
             }
             for (int y = 0; y < k.DepthSize.y; y++)
                 for (int x = 0; x < w; x++)
@@ -100,7 +102,7 @@ namespace SoftBodyDynamics.Solvers
                     {
                         if (!Covers(rects[i], tx, ty))
                             continue;
-                        float2 hit = RaySphere(ray, centres[i], k.Splat.y);
+                        float2 hit = RaySphere(ray, centres[i].xyz, k.Splat.y);
                         if (hit.y > 0f)
                             near = math.min(near, hit.x);
                     }
@@ -109,12 +111,14 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>SplatThickness: summed chords (m, in integer quanta of Splat.w) and their mean attribute (0–1) per thickness pixel.</summary>
-        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness)
+        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness) =>
+            SplatThickness(k, particles, thickness, new int4[k.ParticleCount], new float4[k.ParticleCount]);
+
+        /// <summary>SplatThickness with the caller's scratch (<see cref="FluidSurfaceConstants.ParticleCount"/> entries each): allocates nothing.</summary>
+        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness, Span<int4> rects, Span<float4> spheres)
         {
             int n = k.ParticleCount, w = k.OtherSizes.x;
             int perTile = FluidSurfaceLayout.TileGroup * k.SurfaceCounts.z;
-            var rects = new int4[n];
-            var spheres = new float4[n];
             for (int i = 0; i < n; i++)
             {
                 rects[i] = TileRect(k, particles[i].xyz);
@@ -232,7 +236,7 @@ namespace SoftBodyDynamics.Solvers
                 }
         }
 
-        /// <summary>The frame's smoothing on the CPU (the list of FluidSurfaceFrame.RecordSmoothing); the result ends where FluidSurfaceFrame.SmoothedDepth says.</summary>
+        /// <summary>The frame's smoothing on the CPU (the passes FluidSurfaceFrame.RecordSmoothing records for these settings); the result ends where FluidSurfaceFrame.SmoothedDepth says.</summary>
         public static void Smooth(in FluidSurfaceConstants k, in FluidSurfaceSettings s, Span<float> a, Span<float> b)
         {
             for (int i = 0; i < s.Iterations && s.Filter != FluidSurfaceFilter.None; i++)
