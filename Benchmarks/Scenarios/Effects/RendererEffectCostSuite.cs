@@ -35,7 +35,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>The screen the counted traffic is given for.</summary>
         public const int CountedWidth = 1920, CountedHeight = 1080;
         /// <summary>Timed pairs at most: the default run's (its 0.5 s budget usually stops it first), and the full run's.</summary>
-        public const int Repeats = 9, FullRepeats = 25;
+        public const int Repeats = 25, FullRepeats = 60;
 
         public string Name => SuiteName;
 

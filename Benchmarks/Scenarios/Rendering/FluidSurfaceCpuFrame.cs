@@ -30,6 +30,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         readonly int4[] m_Rects;
         readonly float4[] m_Spheres;
+        readonly int[] m_Covering;
         readonly FluidSurfaceBuffer[] m_Bound;
         readonly int[] m_Dispatches;
         readonly long[] m_Ticks;
@@ -51,6 +52,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             Colour = new float4[Targets.Composite.x * Targets.Composite.y];
             m_Rects = new int4[n];
             m_Spheres = new float4[n];
+            m_Covering = new int[n];
             m_Bound = new FluidSurfaceBuffer[s_Kernels * s_Slots];
             m_Dispatches = new int[s_Kernels];
             m_Ticks = new long[s_Kernels];
@@ -100,10 +102,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             switch (kernel)
             {
                 case FluidSurfaceKernel.SplatDepth:
-                    FluidSurfacePasses.SplatDepth(Constants, particles, Bound(kernel, FluidSurfaceDepthSlot.Depth), m_Rects, m_Spheres);
+                    FluidSurfacePasses.SplatDepth(Constants, particles, Bound(kernel, FluidSurfaceDepthSlot.Depth), m_Rects, m_Spheres, m_Covering);
                     break;
                 case FluidSurfaceKernel.SplatThickness:
-                    FluidSurfacePasses.SplatThickness(Constants, particles, Thickness, m_Rects, m_Spheres);
+                    FluidSurfacePasses.SplatThickness(Constants, particles, Thickness, m_Rects, m_Spheres, m_Covering);
                     break;
                 case FluidSurfaceKernel.NarrowRangeX:
                 case FluidSurfaceKernel.NarrowRangeY:
