@@ -55,6 +55,7 @@ namespace SoftBodyDynamics.Benchmarks
             FluidSurfaceScene scene = FluidSurfaceScene.DamBreak(width, height);
             FluidSurfaceSettings settings = mobile ? FluidSurfaceSettings.Mobile(scene.Radius) : FluidSurfaceSettings.Desktop(scene.Radius);
             FluidSurfaceTargets targets = FluidSurfaceTargets.Of(scene.Camera, settings.DepthDivisor);
+            FluidSurfacePassList passes = FluidSurfacePassList.Of(settings, FluidLook.Water);
             int count = scene.Particles.Length;
             var particles = new NativeArray<float4>(scene.Particles, Allocator.Persistent);
             int capacity = FluidSurfacePasses.TileEntries(
@@ -101,7 +102,7 @@ namespace SoftBodyDynamics.Benchmarks
                 GraphicsBuffer stats = commands.Buffers[(int)FluidSurfaceBuffer.Stats];
                 StepCycleMeasure.Steps(() =>
                 {
-                    FluidSurfaceFrame.Record(ref commands, targets, settings, count);
+                    FluidSurfaceFrame.Record(ref commands, targets, passes, count);
                     AsyncGPUReadback.Request(stats).WaitForCompletion();
                 }, () => { }, int.MaxValue, $"Fluid surface frame {tier}, {count} particles", 5, 20);
             }

@@ -149,6 +149,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public const string FluidSoftBodyCoupling = "Fluid ↔ soft body coupling";
         public const string SoftSoftContacts = "Soft ↔ soft contacts";
         public const string FluidRenderer = "Screen-space fluid renderer (GPU)";
+        public const string RendererSmoothing = "Depth smoothing (fluid renderer)";
+        public const string RendererThickness = "Thickness pass (fluid renderer)";
+        public const string RendererNormals = "Normals pass (fluid renderer)";
+        public const string RendererFullResolution = "Full-resolution depth and composite (fluid renderer)";
     }
 
     /// <summary>A suite that contributes lines to the report's summary.</summary>

@@ -23,6 +23,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new FluidPoiseuilleSuite(),
             new FluidThroughputSuite(),
             new EffectCostSuite(),
+            new RendererEffectCostSuite(),
         };
     }
 }

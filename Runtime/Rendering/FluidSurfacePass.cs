@@ -12,8 +12,8 @@ namespace SoftBodyDynamics.Rendering
 {
     /// <summary>
     /// Draws every registered fluid in view of a camera, per fluid: one compute pass "Fluid Surface" that runs
-    /// Shaders/FluidSurface.compute (tile lists, splats, smoothing, normals, composite; the list of
-    /// <see cref="FluidSurfaceFrame"/>) into a half-float colour texture (screen-sized, or half of it each way in the
+    /// Shaders/FluidSurface.compute (tile lists, splats, smoothing, normals, composite: the passes
+    /// <see cref="FluidSurfacePassList"/> lists for the fluid's settings and look, recorded by <see cref="FluidSurfaceFrame"/>) into a half-float colour texture (screen-sized, or half of it each way in the
     /// mobile tier) with coverage in alpha, then one
     /// raster pass "Fluid Overlay" that blends that texture over the camera colour (Shaders/FluidOverlay.shader).
     /// The composite refracts and depth-tests against the camera's opaque colour and depth textures, so it runs after
@@ -31,7 +31,7 @@ namespace SoftBodyDynamics.Rendering
             public int[] Kernels;
             public FluidSurfaceConstants Constants;
             public FluidSurfaceTargets Targets;
-            public FluidSurfaceSettings Settings;
+            public FluidSurfacePassList Passes;
             public int Particles;
             public readonly BufferHandle[] Buffers = new BufferHandle[k_BufferCount];
             public readonly GraphicsBuffer[] Resolved = new GraphicsBuffer[k_BufferCount];
@@ -152,6 +152,8 @@ namespace SoftBodyDynamics.Rendering
             ReportProblems(source, settingsProblems, lookProblems);
 
             FluidSurfaceTargets targets = FluidSurfaceTargets.Of(frame.Camera, settings);
+            // The one list of passes this fluid runs: what the settings and the look call for, nothing else.
+            FluidSurfacePassList passes = FluidSurfacePassList.Of(settings, look);
             FluidSurfaceResources buffers = ResourcesFor(source);
             buffers.Ensure(targets);
             FluidSurfaceConstants constants = FluidSurfaceConstants.Of(frame.Camera, settings, look, frame.Lighting, source.Count,
@@ -175,7 +177,7 @@ namespace SoftBodyDynamics.Rendering
                 data.Kernels = m_Kernels.Indices;
                 data.Constants = constants;
                 data.Targets = targets;
-                data.Settings = settings;
+                data.Passes = passes;
                 data.Particles = source.Count;
                 for (int b = 0; b < k_BufferCount; b++)
                 {
@@ -236,7 +238,7 @@ namespace SoftBodyDynamics.Rendering
 
             var commands = new FluidSurfaceComputeCommands(cmd, d.Shader, d.Kernels, d.Resolved, d.Ints);
             d.Constants.Set(ref commands);
-            FluidSurfaceFrame.Record(ref commands, d.Targets, d.Settings, d.Particles);
+            FluidSurfaceFrame.Record(ref commands, d.Targets, d.Passes, d.Particles);
         }
 
         /// <summary>Finds the kernels and creates the overlay material for the current settings; false (logged once) when either fails.</summary>

@@ -20,6 +20,11 @@
 #define SURFACE_STAT_DRAWN 2     // particles in front of the near plane and on screen
 #define SURFACE_STAT_COUNT 4
 
+// _SurfaceCounts.w bits: the targets the composite reads besides depth (FluidSurfacePassList.Flags); a pass that is off
+// was not dispatched this frame, so its target holds nothing to read.
+#define SURFACE_FLAG_THICKNESS 1u
+#define SURFACE_FLAG_NORMALS 2u
+
 StructuredBuffer<float4> _Particles;        // xyz world position (m), w attribute (temperature, K)
 RWStructuredBuffer<uint> _TileCounts;       // particles per tile, then the write cursor of each tile
 RWStructuredBuffer<uint> _TileStart;        // tiles + 1 entries: first entry of each tile; the last is the total
@@ -40,7 +45,7 @@ float4 _ThicknessPinhole;
 float4 _ScreenPinhole;   // the same of the full-resolution screen
 uint4 _DepthSize;        // x width, y height (depth pixels), z tiles x, w tiles y
 uint4 _OtherSizes;       // x, y thickness target; z, w screen
-uint4 _SurfaceCounts;    // x particles, y tile-entry capacity, z thickness pixels per thread side in a tile (1 or 2), w unused
+uint4 _SurfaceCounts;    // x particles, y tile-entry capacity, z thickness pixels per thread side in a tile (1 or 2), w pass flags (SURFACE_FLAG_*)
 uint4 _Composite;        // x depth divisor (1 full, 2 half), y look model (FluidLookModel), z 1 when texture row 0 is the top, w composite divisor
 float4 _SceneDepthParams; // Unity's _ZBufferParams of the camera depth texture: eye depth = 1 / (z·d + w)
 float4 _Splat;           // particle radius r (m), r², near plane (m), thickness quantum (m per unit)

@@ -66,9 +66,10 @@ void Composite(uint3 id : SV_DispatchThreadID)
     SurfacePixel px;
     px.pixel = pixel;
     px.eyeDepth = z;
-    px.normal = UnpackNormal(_Normals[DepthIndex(d)]);
+    // A target whose pass is off is not read: the look does not use it (FluidSurfacePassList).
+    px.normal = (_SurfaceCounts.w & SURFACE_FLAG_NORMALS) != 0u ? UnpackNormal(_Normals[DepthIndex(d)]) : float3(0.0, 0.0, 1.0);
     px.view = -normalize(PixelRay(px.pixel, _ScreenPinhole));
-    float2 thickness = ThicknessAt(pixel);
+    float2 thickness = (_SurfaceCounts.w & SURFACE_FLAG_THICKNESS) != 0u ? ThicknessAt(pixel) : float2(_Splat.x, 0.0);
     px.thickness = thickness.x;
     px.heat = thickness.y;
     StoreFluidColor(c, float4(Shade(px), 1.0));

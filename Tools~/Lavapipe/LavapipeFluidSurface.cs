@@ -7,7 +7,7 @@ namespace SoftBodyDynamics.Lavapipe
 {
     /// <summary>
     /// The screen-space fluid passes (Shaders/FluidSurface.compute) on lavapipe, recorded by the same
-    /// <see cref="FluidSurfaceFrame"/> list as Unity's renderer feature. The scene comes in and the fluid colour goes out
+    /// <see cref="FluidSurfaceFrame"/> and <see cref="FluidSurfacePassList"/> as Unity's renderer feature. The scene comes in and the fluid colour goes out
     /// as structured buffers (SBD_SCREEN_BUFFERS), everything between is the kernels Unity runs.
     /// </summary>
     public sealed class LavapipeFluidSurface : IDisposable, IFluidSurfaceCommands
@@ -17,6 +17,10 @@ namespace SoftBodyDynamics.Lavapipe
         {
             public FluidSurfaceConstants Constants;
             public FluidSurfaceTargets Targets;
+            /// <summary>The passes the frame ran; a target whose pass is off holds nothing meaningful.</summary>
+            public FluidSurfacePassList Passes;
+            /// <summary>Compute dispatches recorded for the frame (the last attempt's, when the tile list grew).</summary>
+            public int Dispatches;
             /// <summary>Depth straight from the splat (m, 0 = no fluid), per depth pixel.</summary>
             public float[] RawDepth;
             /// <summary>Depth after smoothing.</summary>
@@ -40,6 +44,7 @@ namespace SoftBodyDynamics.Lavapipe
         readonly LavapipeBuffer[] m_Buffers = new LavapipeBuffer[Enum.GetValues(typeof(FluidSurfaceBuffer)).Length];
         LavapipeBuffer m_SceneColour, m_SceneDepth, m_FluidColour;
         readonly int[] m_Kernels;
+        int m_Dispatches;
 
         /// <summary>Tile entries the buffers hold; grown when a frame needs more.</summary>
         public int TileCapacity { get; private set; }
@@ -47,6 +52,8 @@ namespace SoftBodyDynamics.Lavapipe
         public bool GrowTileLists { get; set; } = true;
         /// <summary>Times the tile list was grown and the frame's splats redone.</summary>
         public int Regrowths { get; private set; }
+        /// <summary>Whether each frame starts with +∞ in the thickness target (tests: a pass that is off leaves nothing a kernel may read).</summary>
+        public bool PoisonThickness { get; set; }
 
         public LavapipeFluidSurface(LavapipeDevice device, int initialTileCapacity = 4096)
         {
@@ -68,7 +75,11 @@ namespace SoftBodyDynamics.Lavapipe
         public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) =>
             m_Shader.SetBuffer(m_Kernels[(int)kernel], FluidSurfaceLayout.DepthSlotNames[(int)slot], m_Buffers[(int)buffer]);
 
-        public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY) => m_Shader.Dispatch(m_Kernels[(int)kernel], groupsX, groupsY);
+        public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY)
+        {
+            m_Dispatches++;
+            m_Shader.Dispatch(m_Kernels[(int)kernel], groupsX, groupsY);
+        }
 
         public void SetVector(int global, float4 value) => m_Shader.SetVector(FluidSurfaceConstants.Names[global], value);
 
@@ -107,7 +118,7 @@ namespace SoftBodyDynamics.Lavapipe
             int screenPixels = t.Screen.x * t.Screen.y;
             if (sceneColour.Length != screenPixels || sceneEyeDepth.Length != screenPixels)
                 throw new ArgumentException($"the scene must have {screenPixels} pixels");
-            var frame = new Frame { Targets = t };
+            var frame = new Frame { Targets = t, Passes = FluidSurfacePassList.Of(settings, look) };
             LavapipeFluidSurface self = this;
             for (int attempt = 0; ; attempt++)
             {
@@ -115,9 +126,12 @@ namespace SoftBodyDynamics.Lavapipe
                 particles.CopyTo(m_Buffers[(int)FluidSurfaceBuffer.Particles].As<float4>());
                 sceneColour.CopyTo(m_SceneColour.As<float4>());
                 sceneEyeDepth.CopyTo(m_SceneDepth.As<float>());
+                if (PoisonThickness)
+                    m_Buffers[(int)FluidSurfaceBuffer.Thickness].As<float2>().Fill(new float2(float.PositiveInfinity));
                 frame.Constants = FluidSurfaceConstants.Of(camera, settings, look, lighting, particles.Length, TileCapacity);
                 frame.Constants.Set(ref self);
-                FluidSurfaceFrame.RecordSplats(ref self, t, particles.Length);
+                m_Dispatches = 0;
+                FluidSurfaceFrame.RecordSplats(ref self, t, frame.Passes, particles.Length);
                 frame.SplatMs = m_Shader.Submit();
                 frame.Stats = m_Buffers[(int)FluidSurfaceBuffer.Stats].As<uint>().ToArray();
                 int needed = (int)frame.Stats[FluidSurfaceLayout.StatEntries];
@@ -128,10 +142,11 @@ namespace SoftBodyDynamics.Lavapipe
                 Regrowths++;
             }
             frame.RawDepth = m_Buffers[(int)FluidSurfaceBuffer.DepthA].As<float>().Slice(0, t.Depth.x * t.Depth.y).ToArray();
-            FluidSurfaceBuffer smoothed = FluidSurfaceFrame.RecordSmoothing(ref self, t, settings);
+            FluidSurfaceBuffer smoothed = FluidSurfaceFrame.RecordSmoothing(ref self, t, frame.Passes);
             frame.SmoothMs = m_Shader.Recorded > 0 ? m_Shader.Submit() : 0.0;
-            FluidSurfaceFrame.RecordShading(ref self, t, smoothed);
+            FluidSurfaceFrame.RecordShading(ref self, t, frame.Passes, smoothed);
             frame.ShadeMs = m_Shader.Submit();
+            frame.Dispatches = m_Dispatches;
             frame.Depth = m_Buffers[(int)smoothed].As<float>().Slice(0, t.Depth.x * t.Depth.y).ToArray();
             frame.Thickness = m_Buffers[(int)FluidSurfaceBuffer.Thickness].As<float2>().Slice(0, t.Thickness.x * t.Thickness.y).ToArray();
             frame.Normals = m_Buffers[(int)FluidSurfaceBuffer.Normals].As<uint>().Slice(0, t.Depth.x * t.Depth.y).ToArray();

@@ -18,7 +18,8 @@ namespace SoftBodyDynamics.Runner
             EffectNames.ShapeMatchingBody, EffectNames.MassSpringBody, EffectNames.FemBody, EffectNames.Fluid,
             EffectNames.FlockingCohesion, EffectNames.AkinciCohesion, EffectNames.FluidViscosity, EffectNames.FluidColliders, EffectNames.FluidCollidersOutOfReach,
             EffectNames.SoftBodyCollisions, EffectNames.Plasticity, EffectNames.FluidSoftBodyCoupling, EffectNames.SoftSoftContacts,
-            EffectNames.FluidRenderer,
+            EffectNames.FluidRenderer, EffectNames.RendererSmoothing, EffectNames.RendererThickness, EffectNames.RendererNormals,
+            EffectNames.RendererFullResolution,
         };
 
         public static void Write(StringBuilder md, IReadOnlyList<SuiteResult> suites, IReadOnlyList<PartResult> parts, RunScope scope = RunScope.Full)

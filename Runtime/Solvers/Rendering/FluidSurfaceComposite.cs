@@ -162,9 +162,11 @@ namespace SoftBodyDynamics.Solvers
                         output[y * size.x + x] = float4.zero;
                         continue;
                     }
-                    float3 n = FluidSurfacePasses.UnpackNormal(i.Normals[dy * k.DepthSize.x + dx]);
+                    // A target whose pass is off is not read: the look does not use it (FluidSurfacePassList).
+                    float3 n = (k.PassFlags & FluidSurfacePassList.NormalsFlag) != 0
+                        ? FluidSurfacePasses.UnpackNormal(i.Normals[dy * k.DepthSize.x + dx]) : new float3(0f, 0f, 1f);
                     float3 view = -math.normalize(FluidSurfacePasses.PixelRay(px, py, k.ScreenPinhole));
-                    float2 t = ThicknessAt(k, i, px, py);
+                    float2 t = (k.PassFlags & FluidSurfacePassList.ThicknessFlag) != 0 ? ThicknessAt(k, i, px, py) : new float2(k.Splat.x, 0f);
                     float3 c = k.Composite.y == 0
                         ? ShadeLit(k, i, px, py, z, n, view, t.x, t.y)
                         : ShadeUnlit(k, i, px, py, n, view, t.x, k.Composite.y);

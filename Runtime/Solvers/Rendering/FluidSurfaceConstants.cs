@@ -19,13 +19,15 @@ namespace SoftBodyDynamics.Solvers
         public int ParticleCount => SurfaceCounts.x;
         /// <summary>Tile entries that fit; more are dropped (counted in <see cref="FluidSurfaceLayout.StatDropped"/>).</summary>
         public int TileCapacity => SurfaceCounts.y;
+        /// <summary>The targets the composite reads besides depth (<see cref="FluidSurfacePassList.Flags"/>).</summary>
+        public int PassFlags => SurfaceCounts.w;
 
         /// <summary>Thickness quantum: chords are summed as integers of r / 1024 metres.</summary>
         public const float QuantaPerRadius = 1024f;
 
         /// <summary>
         /// The constants for <paramref name="particles"/> particles drawn by <paramref name="camera"/>, with room for
-        /// <paramref name="tileCapacity"/> tile entries. <paramref name="sceneDepthParams"/> is Unity's _ZBufferParams
+        /// <paramref name="tileCapacity"/> tile entries, and the pass flags of <see cref="FluidSurfacePassList.Of"/>. <paramref name="sceneDepthParams"/> is Unity's _ZBufferParams
         /// for the camera depth texture (unused by the buffer harness, whose scene depth is already eye depth);
         /// <paramref name="flipY"/> when texture row 0 is the top of the screen.
         /// </summary>
@@ -37,6 +39,7 @@ namespace SoftBodyDynamics.Solvers
             float3x3 rows = math.transpose(rotation);
             float r = settings.ParticleRadius;
             int threadSide = settings.DepthDivisor == 1 ? 1 : 2;
+            FluidSurfacePassList passes = FluidSurfacePassList.Of(settings, look);
             return new FluidSurfaceConstants
             {
                 ViewRow0 = new float4(rows.c0, camera.Translation.x),
@@ -47,7 +50,7 @@ namespace SoftBodyDynamics.Solvers
                 ScreenPinhole = camera.Pinhole(1),
                 DepthSize = new int4(t.Depth.x, t.Depth.y, t.Tiles.x, t.Tiles.y),
                 OtherSizes = new int4(t.Thickness.x, t.Thickness.y, t.Screen.x, t.Screen.y),
-                SurfaceCounts = new int4(particles, tileCapacity, threadSide, 0),
+                SurfaceCounts = new int4(particles, tileCapacity, threadSide, passes.Flags),
                 Composite = new int4(settings.DepthDivisor, (int)look.Model, flipY ? 1 : 0, settings.CompositeDivisor),
                 SceneDepthParams = sceneDepthParams,
                 Splat = new float4(r, r * r, camera.Near, r / QuantaPerRadius),

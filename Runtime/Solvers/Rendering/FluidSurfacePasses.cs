@@ -80,61 +80,88 @@ namespace SoftBodyDynamics.Solvers
         static bool Covers(int4 rect, int tx, int ty) => rect.x <= rect.z && tx >= rect.x && tx <= rect.z && ty >= rect.y && ty <= rect.w;
 
         /// <summary>SplatDepth: eye depth of the nearest sphere per depth pixel, 0 where none.</summary>
-        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth)
+        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth) =>
+            SplatDepth(k, particles, depth, new int4[k.ParticleCount], new float4[k.ParticleCount], new int[k.ParticleCount]);
+
+        /// <summary>
+        /// SplatDepth with the caller's scratch (<see cref="FluidSurfaceConstants.ParticleCount"/> entries each): allocates
+        /// nothing. Each tile first gathers the particles whose rectangle covers it, in index order, so every pixel tests
+        /// the same particles in the same order as a test of every particle would.
+        /// </summary>
+        public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth, Span<int4> rects, Span<float4> centres,
+            Span<int> covering)
         {
-            int n = k.ParticleCount, w = k.DepthSize.x;
-            var rects = new int4[n];
-            var centres = new float3[n];
+            int n = k.ParticleCount, w = k.DepthSize.x, h = k.DepthSize.y;
+            const int tile = FluidSurfaceLayout.TileSize;
             for (int i = 0; i < n; i++)
             {
                 rects[i] = TileRect(k, particles[i].xyz);
-                centres[i] = ToView(k, particles[i].xyz);
+                centres[i] = new float4(ToView(k, particles[i].xyz), 0f);
             }
-            for (int y = 0; y < k.DepthSize.y; y++)
-                for (int x = 0; x < w; x++)
+            for (int ty = 0; ty * tile < h; ty++)
+                for (int tx = 0; tx * tile < w; tx++)
                 {
-                    int tx = x / FluidSurfaceLayout.TileSize, ty = y / FluidSurfaceLayout.TileSize;
-                    float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole);
-                    float near = Huge;
-                    for (int i = 0; i < n; i++)
-                    {
-                        if (!Covers(rects[i], tx, ty))
-                            continue;
-                        float2 hit = RaySphere(ray, centres[i], k.Splat.y);
-                        if (hit.y > 0f)
-                            near = math.min(near, hit.x);
-                    }
-                    depth[y * w + x] = near < Huge ? near : 0f;
+                    int count = Gather(rects, n, tx, ty, covering);
+                    for (int y = ty * tile; y < math.min(h, (ty + 1) * tile); y++)
+                        for (int x = tx * tile; x < math.min(w, (tx + 1) * tile); x++)
+                        {
+                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole);
+                            float near = Huge;
+                            for (int c = 0; c < count; c++)
+                            {
+                                float2 hit = RaySphere(ray, centres[covering[c]].xyz, k.Splat.y);
+                                if (hit.y > 0f)
+                                    near = math.min(near, hit.x);
+                            }
+                            depth[y * w + x] = near < Huge ? near : 0f;
+                        }
                 }
         }
 
-        /// <summary>SplatThickness: summed chords (m, in integer quanta of Splat.w) and their mean attribute (0–1) per thickness pixel.</summary>
-        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness)
+        /// <summary>The particles whose rectangle covers tile (tx, ty), in index order; returns their count.</summary>
+        static int Gather(ReadOnlySpan<int4> rects, int n, int tx, int ty, Span<int> covering)
         {
-            int n = k.ParticleCount, w = k.OtherSizes.x;
+            int count = 0;
+            for (int i = 0; i < n; i++)
+                if (Covers(rects[i], tx, ty))
+                    covering[count++] = i;
+            return count;
+        }
+
+        /// <summary>SplatThickness: summed chords (m, in integer quanta of Splat.w) and their mean attribute (0–1) per thickness pixel.</summary>
+        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness) =>
+            SplatThickness(k, particles, thickness, new int4[k.ParticleCount], new float4[k.ParticleCount], new int[k.ParticleCount]);
+
+        /// <summary>SplatThickness with the caller's scratch (<see cref="FluidSurfaceConstants.ParticleCount"/> entries each): allocates nothing; tiles gather their particles as in SplatDepth.</summary>
+        public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness, Span<int4> rects, Span<float4> spheres,
+            Span<int> covering)
+        {
+            int n = k.ParticleCount, w = k.OtherSizes.x, h = k.OtherSizes.y;
             int perTile = FluidSurfaceLayout.TileGroup * k.SurfaceCounts.z;
-            var rects = new int4[n];
-            var spheres = new float4[n];
             for (int i = 0; i < n; i++)
             {
                 rects[i] = TileRect(k, particles[i].xyz);
                 spheres[i] = new float4(ToView(k, particles[i].xyz), math.saturate((particles[i].w - k.AttributeRange.x) * k.AttributeRange.y));
             }
             float inverseQuantum = 1f / k.Splat.w;
-            for (int y = 0; y < k.OtherSizes.y; y++)
-                for (int x = 0; x < w; x++)
+            for (int ty = 0; ty * perTile < h; ty++)
+                for (int tx = 0; tx * perTile < w; tx++)
                 {
-                    float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.ThicknessPinhole);
-                    uint sum = 0, attributes = 0;
-                    for (int i = 0; i < n; i++)
-                    {
-                        if (!Covers(rects[i], x / perTile, y / perTile))
-                            continue;
-                        float2 hit = RaySphere(ray, spheres[i].xyz, k.Splat.y);
-                        sum += (uint)math.round(hit.y * inverseQuantum);
-                        attributes += (uint)math.round(hit.y * spheres[i].w * inverseQuantum);
-                    }
-                    thickness[y * w + x] = new float2(sum * k.Splat.w, sum > 0 ? attributes / (float)sum : 0f);
+                    int count = Gather(rects, n, tx, ty, covering);
+                    for (int y = ty * perTile; y < math.min(h, (ty + 1) * perTile); y++)
+                        for (int x = tx * perTile; x < math.min(w, (tx + 1) * perTile); x++)
+                        {
+                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.ThicknessPinhole);
+                            uint sum = 0, attributes = 0;
+                            for (int c = 0; c < count; c++)
+                            {
+                                float4 sphere = spheres[covering[c]];
+                                float2 hit = RaySphere(ray, sphere.xyz, k.Splat.y);
+                                sum += (uint)math.round(hit.y * inverseQuantum);
+                                attributes += (uint)math.round(hit.y * sphere.w * inverseQuantum);
+                            }
+                            thickness[y * w + x] = new float2(sum * k.Splat.w, sum > 0 ? attributes / (float)sum : 0f);
+                        }
                 }
         }
 
@@ -232,7 +259,7 @@ namespace SoftBodyDynamics.Solvers
                 }
         }
 
-        /// <summary>The frame's smoothing on the CPU (the list of FluidSurfaceFrame.RecordSmoothing); the result ends where FluidSurfaceFrame.SmoothedDepth says.</summary>
+        /// <summary>The frame's smoothing on the CPU (the passes FluidSurfaceFrame.RecordSmoothing records for these settings); the result ends where FluidSurfaceFrame.SmoothedDepth says.</summary>
         public static void Smooth(in FluidSurfaceConstants k, in FluidSurfaceSettings s, Span<float> a, Span<float> b)
         {
             for (int i = 0; i < s.Iterations && s.Filter != FluidSurfaceFilter.None; i++)

@@ -117,7 +117,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             FluidSurfaceConstants k = Constants(cam, s);
             float[] a = Plane(k, 1.5f, 32, 24, holeX: 10), b = new float[a.Length];
             FluidSurfacePasses.Smooth(k, s, a, b);
-            float[] result = FluidSurfaceFrame.SmoothedDepth(s) == FluidSurfaceBuffer.DepthA ? a : b;
+            float[] result = FluidSurfaceFrame.SmoothedDepth(FluidSurfacePassList.Of(s, FluidLook.Water)) == FluidSurfaceBuffer.DepthA ? a : b;
             for (int i = 0; i < result.Length; i++)
             {
                 if (i % 32 == 10)
@@ -141,7 +141,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             int spike = 12 * 32 + 16;
             a[spike] = 1.5f - 0.02f;   // a bump 2 cm towards the camera, inside the depth range
             FluidSurfacePasses.Smooth(k, s, a, b);
-            float[] result = FluidSurfaceFrame.SmoothedDepth(s) == FluidSurfaceBuffer.DepthA ? a : b;
+            float[] result = FluidSurfaceFrame.SmoothedDepth(FluidSurfacePassList.Of(s, FluidLook.Water)) == FluidSurfaceBuffer.DepthA ? a : b;
             Assert.That(1.5f - result[spike], Is.LessThan(0.5f * 0.02f), "the spike must lose at least half its height");
         }
 
@@ -177,13 +177,13 @@ namespace SoftBodyDynamics.Tests.Solvers
                     s.Filter = filter;
                     s.Iterations = iterations;
                     var rec = new Recorder();
-                    FluidSurfaceFrame.Record(ref rec, FluidSurfaceTargets.Of(cam, 1), s, 0);
+                    FluidSurfaceFrame.Record(ref rec, FluidSurfaceTargets.Of(cam, 1), FluidSurfacePassList.Of(s, FluidLook.Water), 0);
                     int filters = rec.Count(FluidSurfaceKernel.NarrowRangeX) + rec.Count(FluidSurfaceKernel.NarrowRangeY) + rec.Count(FluidSurfaceKernel.BilateralX)
                         + rec.Count(FluidSurfaceKernel.BilateralY) + rec.Count(FluidSurfaceKernel.CurvatureFlow);
                     int expected = filter == FluidSurfaceFilter.None ? 0 : filter == FluidSurfaceFilter.CurvatureFlow ? iterations : 2 * iterations;
                     Assert.That(filters, Is.EqualTo(expected), $"{filter} × {iterations}");
                     Assert.That(rec.Count(FluidSurfaceKernel.Composite), Is.EqualTo(1));
-                    Assert.That(rec.CompositeDepth, Is.EqualTo(FluidSurfaceFrame.SmoothedDepth(s)));
+                    Assert.That(rec.CompositeDepth, Is.EqualTo(FluidSurfaceFrame.SmoothedDepth(FluidSurfacePassList.Of(s, FluidLook.Water))));
                     Assert.That(rec.MinGroups, Is.GreaterThanOrEqualTo(1), "no empty dispatch, even with no particles");
                 }
         }

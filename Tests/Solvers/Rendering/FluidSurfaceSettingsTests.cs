@@ -85,12 +85,12 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             FluidSurfaceSettings full = FluidSurfaceSettings.Desktop(0.01f), half = FluidSurfaceSettings.Mobile(0.01f);
             full.Iterations = half.Iterations = 1;
-            FluidSurfacePassCost[] f = FluidSurfaceCost.Passes(full), h = FluidSurfaceCost.Passes(half);
+            FluidSurfacePassCost[] f = FluidSurfaceCost.Passes(full, FluidLook.Water), h = FluidSurfaceCost.Passes(half, FluidLook.Water);
             // Depth-resolution passes cost a quarter at half resolution; thickness is at half resolution in both.
             Assert.That(h[0].BytesPerPixel, Is.EqualTo(f[0].BytesPerPixel / 4).Within(1e-12));
             Assert.That(h[1].BytesPerPixel, Is.EqualTo(f[1].BytesPerPixel).Within(1e-12));
             Assert.That(h[2].BytesPerPixel, Is.EqualTo(f[2].BytesPerPixel / 4).Within(1e-12));
-            Assert.That(FluidSurfaceCost.BytesPerPixel(half), Is.LessThan(FluidSurfaceCost.BytesPerPixel(full)));
+            Assert.That(FluidSurfaceCost.BytesPerPixel(half, FluidLook.Water), Is.LessThan(FluidSurfaceCost.BytesPerPixel(full, FluidLook.Water)));
             // A half-resolution composite writes a quarter of the colour and the overlay reads a quarter of it; the
             // camera colour the overlay blends onto stays at full resolution (4 + 4 bytes).
             Assert.That(h[5].BytesPerPixel, Is.EqualTo(FluidSurfaceCost.FluidColourBytes / 4.0 + 2 * FluidSurfaceCost.CameraColourBytes).Within(1e-12));
@@ -98,7 +98,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             // Each separable iteration reads and writes the depth twice: 2 × (4 + 4) bytes per depth pixel.
             FluidSurfaceSettings more = full;
             more.Iterations = 3;
-            Assert.That(FluidSurfaceCost.BytesPerPixel(more) - FluidSurfaceCost.BytesPerPixel(full), Is.EqualTo(2 * 16.0).Within(1e-9));
+            Assert.That(FluidSurfaceCost.BytesPerPixel(more, FluidLook.Water) - FluidSurfaceCost.BytesPerPixel(full, FluidLook.Water), Is.EqualTo(2 * 16.0).Within(1e-9));
         }
     }
 }

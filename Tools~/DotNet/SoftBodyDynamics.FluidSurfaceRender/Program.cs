@@ -92,13 +92,16 @@ static class Program
         // Cost table of the two tiers.
         md.AppendLine("### Counted memory traffic per screen pixel").AppendLine();
         FluidSurfaceSettings mobile = FluidSurfaceSettings.Mobile(dam.Radius);
-        md.AppendLine("| pass | desktop (full resolution) B/px | mobile (half-resolution depth and composite) B/px |");
+        md.AppendLine("| pass (water) | desktop (full resolution) B/px | mobile (half-resolution depth and composite) B/px |");
         md.AppendLine("|---|---|---|");
-        var dc = FluidSurfaceCost.Passes(desktop);
-        var mc = FluidSurfaceCost.Passes(mobile);
-        for (int i = 0; i < dc.Length; i++)
-            md.AppendLine($"| {dc[i].Pass.Split(" (")[0]} | {dc[i].BytesPerPixel.ToString("0.#", Inv)} | {mc[i].BytesPerPixel.ToString("0.#", Inv)} |");
-        md.AppendLine($"| **total** | **{FluidSurfaceCost.BytesPerPixel(desktop).ToString("0.#", Inv)}** | **{FluidSurfaceCost.BytesPerPixel(mobile).ToString("0.#", Inv)}** |");
+        var dc = FluidSurfaceCost.Passes(desktop, FluidLook.Water);
+        var mc = FluidSurfaceCost.Passes(mobile, FluidLook.Water);
+        foreach (FluidSurfacePassCost p in dc)
+        {
+            double m = mc.Where(q => q.Stage == p.Stage).Select(q => q.BytesPerPixel).DefaultIfEmpty(0).First();
+            md.AppendLine($"| {p.Pass.Split(" (")[0]} | {p.BytesPerPixel.ToString("0.#", Inv)} | {m.ToString("0.#", Inv)} |");
+        }
+        md.AppendLine($"| **total** | **{FluidSurfaceCost.BytesPerPixel(desktop, FluidLook.Water).ToString("0.#", Inv)}** | **{FluidSurfaceCost.BytesPerPixel(mobile, FluidLook.Water).ToString("0.#", Inv)}** |");
         double entries = f.Stats[FluidSurfaceLayout.StatEntries] / (double)Math.Max(1, f.Stats[FluidSurfaceLayout.StatDrawn]);
         md.AppendLine();
         md.AppendLine($"Tile binning adds {FluidSurfaceCost.BinningBytesPerParticle(entries).ToString("0", Inv)} B per particle in the dam-break frame ({entries.ToString("0.00", Inv)} tile entries per particle).").AppendLine();
@@ -136,14 +139,14 @@ static class Program
                 double ms = Median(times);
                 var e = FluidSurfaceReference.Compare(references[divisor], frame.Depth, frame.Normals, scene.Radius);
                 string res = divisor == 1 ? "full" : "half";
-                md.AppendLine($"| {scene.Name} | {Name(filter)} | {iterations} | {res} | {ms.ToString("0.0", Inv)} | {FluidSurfaceCost.BytesPerPixel(s).ToString("0.#", Inv)} | {e.MeanDepth.ToString("0.000", Inv)} / {e.P95Depth.ToString("0.00", Inv)} | {e.MeanAngle.ToString("0.0", Inv)} / {e.P95Angle.ToString("0.0", Inv)} | {e.CoverageMismatch.ToString("P1", Inv)} |");
+                md.AppendLine($"| {scene.Name} | {Name(filter)} | {iterations} | {res} | {ms.ToString("0.0", Inv)} | {FluidSurfaceCost.BytesPerPixel(s, FluidLook.Water).ToString("0.#", Inv)} | {e.MeanDepth.ToString("0.000", Inv)} / {e.P95Depth.ToString("0.00", Inv)} | {e.MeanAngle.ToString("0.0", Inv)} / {e.P95Angle.ToString("0.0", Inv)} | {e.CoverageMismatch.ToString("P1", Inv)} |");
                 if (filter == FluidSurfaceFilter.None && divisor == 1)
                 {
                     var u = FluidSurfaceReference.Compare(union, frame.RawDepth, frame.Normals, scene.Radius);
                     md.AppendLine($"| {scene.Name} | raw splat vs union of spheres | – | full | – | – | {u.MeanDepth.ToString("0.0e0", Inv)} / {u.P95Depth.ToString("0.0e0", Inv)} | – | {u.CoverageMismatch.ToString("P2", Inv)} |");
                 }
                 if (scene == accuracyScenes[^1])
-                    points.Add(($"{Name(filter)}, {res}", FluidSurfaceCost.BytesPerPixel(s), e.MeanAngle, e.MeanDepth, filter == FluidSurfaceFilter.None ? "" : iterations.ToString(Inv)));
+                    points.Add(($"{Name(filter)}, {res}", FluidSurfaceCost.BytesPerPixel(s, FluidLook.Water), e.MeanAngle, e.MeanDepth, filter == FluidSurfaceFilter.None ? "" : iterations.ToString(Inv)));
             }
         }
         md.AppendLine();

@@ -196,7 +196,7 @@ namespace SoftBodyDynamics.Tests.Compute
             LavapipeFluidSurface.Frame f = Render(scene, s, FluidLook.Water);
             float[] a = (float[])f.RawDepth.Clone(), b = new float[a.Length];
             FluidSurfacePasses.Smooth(f.Constants, s, a, b);
-            float[] cpu = FluidSurfaceFrame.SmoothedDepth(s) == FluidSurfaceBuffer.DepthA ? a : b;
+            float[] cpu = FluidSurfaceFrame.SmoothedDepth(FluidSurfacePassList.Of(s, FluidLook.Water)) == FluidSurfaceBuffer.DepthA ? a : b;
             if (filter == FluidSurfaceFilter.None)
                 cpu = f.RawDepth;
             // Separable pass: a weighted mean of m ≤ 2·32 + 1 samples, m + 2 roundings plus the weights' exp (3 + 2|x| ulp,
@@ -271,6 +271,50 @@ namespace SoftBodyDynamics.Tests.Compute
             Assert.That(f.Colour.Length, Is.EqualTo(f.Targets.Composite.x * f.Targets.Composite.y));
             Assert.That(covered, Is.GreaterThan(100 / (divisor * divisor)));
             Assert.That(beyond, Is.LessThanOrEqualTo((int)(BranchShare * covered)));
+            Lavapipe.AssertValid();
+        }
+
+        [Test]
+        public void Frame_DispatchesThePassListOfItsLook([Values(0, 5, 6, 7)] int preset)
+        {
+            FluidSurfaceScene scene = Get("two-blobs");
+            var (name, look) = FluidLook.Presets[preset];
+            FluidSurfaceSettings s = Settings(scene, FluidSurfaceFilter.NarrowRange, 1);
+            LavapipeFluidSurface.Frame f = Render(scene, s, look);
+            FluidSurfacePassList list = FluidSurfacePassList.Of(s, look);
+            Assert.That(f.Passes, Is.EqualTo(list), name);
+            Assert.That(f.Dispatches, Is.EqualTo(list.TotalDispatches), name);
+        }
+
+        [Test]
+        public void Composite_ReadsNoThicknessWhenItsPassIsOff()
+        {
+            FluidSurfaceScene scene = Get("two-blobs");
+            FluidLook clear = FluidLook.Water;
+            clear.Refraction = 0f;
+            clear.Absorption = float3.zero;
+            FluidSurfaceSettings s = Settings(scene, FluidSurfaceFilter.NarrowRange, 1);
+            Assert.That(FluidSurfacePassList.Of(s, clear).Thickness, Is.False);
+            LavapipeFluidSurface.Frame f;
+            Lavapipe.Surface.PoisonThickness = true;
+            try
+            {
+                f = Render(scene, s, clear);
+            }
+            finally
+            {
+                Lavapipe.Surface.PoisonThickness = false;
+            }
+            // A read of the infinite thickness would make the colour NaN (e^(−0 · ∞)); NaN itself would not do: the
+            // composite skips thickness texels that are not positive.
+            Assert.That(float.IsPositiveInfinity(f.Thickness[0].x), Is.True, "no thickness splat ran over the poisoned target");
+            int covered = 0;
+            foreach (float4 c in f.Colour)
+            {
+                Assert.That(math.all(math.isfinite(c)), Is.True);
+                covered += c.w > 0f ? 1 : 0;
+            }
+            Assert.That(covered, Is.GreaterThan(100));
             Lavapipe.AssertValid();
         }
 
