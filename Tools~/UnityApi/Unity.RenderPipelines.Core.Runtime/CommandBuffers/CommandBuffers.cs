@@ -23,12 +23,6 @@ namespace UnityEngine.Rendering
     {
         internal ComputeCommandBuffer() => throw null;
 
-        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeVectorParam_UnityEngine_ComputeShader_System_Int32_UnityEngine_Vector4_
-        public void SetComputeVectorParam(ComputeShader computeShader, int nameID, Vector4 val) => throw null;
-
-        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeIntParams_UnityEngine_ComputeShader_System_Int32_System_Int32___
-        public void SetComputeIntParams(ComputeShader computeShader, int nameID, params int[] values) => throw null;
-
         // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetBufferData__1_UnityEngine_GraphicsBuffer_Unity_Collections_NativeArray___0__
         // (wraps CommandBuffer.SetBufferData: https://docs.unity3d.com/ScriptReference/Rendering.CommandBuffer.SetBufferData.html)
         public void SetBufferData<T>(GraphicsBuffer buffer, NativeArray<T> data) where T : struct => throw null;
