@@ -30,17 +30,20 @@ namespace SoftBodyDynamics.Benchmarks
             public int[] Kernels;
             public GraphicsBuffer[] Buffers;
             public int[] SlotIds;
+            public GraphicsBuffer Constants;
+            public NativeArray<FluidSurfaceConstants> ConstantData;
 
             public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) =>
                 Shader.SetBuffer(Kernels[(int)kernel], SlotIds[(int)slot], Buffers[(int)buffer]);
 
             public void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY) => Shader.Dispatch(Kernels[(int)kernel], groupsX, groupsY, 1);
 
-            public void SetVector(int global, float4 value) =>
-                Shader.SetVector(UnityEngine.Shader.PropertyToID(FluidSurfaceConstants.Names[global]), new Vector4(value.x, value.y, value.z, value.w));
-
-            public void SetInts(int global, int4 value) =>
-                Shader.SetInts(UnityEngine.Shader.PropertyToID(FluidSurfaceConstants.Names[global]), value.x, value.y, value.z, value.w);
+            public void SetConstants(in FluidSurfaceConstants constants)
+            {
+                ConstantData[0] = constants;
+                Constants.SetData(ConstantData, 0, 0, 1);
+                Shader.SetConstantBuffer(UnityEngine.Shader.PropertyToID(FluidSurfaceConstants.BufferName), Constants, 0, FluidSurfaceConstants.Bytes);
+            }
         }
 
         [Test, Performance]
@@ -70,6 +73,8 @@ namespace SoftBodyDynamics.Benchmarks
                 Kernels = new int[names.Length],
                 Buffers = new GraphicsBuffer[Enum.GetValues(typeof(FluidSurfaceBuffer)).Length],
                 SlotIds = new int[FluidSurfaceLayout.DepthSlotNames.Length],
+                Constants = new GraphicsBuffer(GraphicsBuffer.Target.Constant, 1, FluidSurfaceConstants.Bytes),
+                ConstantData = new NativeArray<FluidSurfaceConstants>(1, Allocator.Persistent),
             };
             for (int k = 0; k < names.Length; k++)
                 commands.Kernels[k] = shader.FindKernel(names[k]);
@@ -90,7 +95,7 @@ namespace SoftBodyDynamics.Benchmarks
             fluidColour.Create();
             try
             {
-                constants.Set(ref commands);
+                commands.SetConstants(constants);
                 foreach (int kernel in commands.Kernels)
                     for (int b = 0; b < bufferNames.Length; b++)
                         if (bufferNames[b] != null)
@@ -110,6 +115,8 @@ namespace SoftBodyDynamics.Benchmarks
             {
                 foreach (GraphicsBuffer b in commands.Buffers)
                     b?.Release();
+                commands.Constants.Release();
+                commands.ConstantData.Dispose();
                 sceneColour.Release();
                 sceneDepth.Release();
                 fluidColour.Release();

@@ -12,9 +12,6 @@ namespace SoftBodyDynamics.Rendering
         /// <summary>Property ID per <see cref="FluidSurfaceDepthSlot"/>.</summary>
         public static readonly int[] DepthSlots = Ids(FluidSurfaceLayout.DepthSlotNames);
 
-        /// <summary>Property ID per global of <see cref="FluidSurfaceConstants.Names"/>.</summary>
-        public static readonly int[] Globals = Ids(FluidSurfaceConstants.Names);
-
         /// <summary>The composite's scene inputs and its output (FluidSurfaceScreenIO.hlsl).</summary>
         public static readonly int SceneColor = Shader.PropertyToID("_SceneColor");
         public static readonly int SceneDepth = Shader.PropertyToID("_SceneDepth");

@@ -35,7 +35,7 @@ namespace SoftBodyDynamics.Rendering
             public int Particles;
             public readonly BufferHandle[] Buffers = new BufferHandle[k_BufferCount];
             public readonly GraphicsBuffer[] Resolved = new GraphicsBuffer[k_BufferCount];
-            public readonly int[] Ints = new int[4];
+            public FluidSurfaceConstantBuffer ConstantBuffer;
             public TextureHandle SceneColor, SceneDepth, FluidColor;
         }
 
@@ -176,6 +176,7 @@ namespace SoftBodyDynamics.Rendering
                 data.Shader = m_Kernels.Shader;
                 data.Kernels = m_Kernels.Indices;
                 data.Constants = constants;
+                data.ConstantBuffer = buffers.Constants;
                 data.Targets = targets;
                 data.Passes = passes;
                 data.Particles = source.Count;
@@ -236,8 +237,8 @@ namespace SoftBodyDynamics.Rendering
             cmd.SetComputeTextureParam(d.Shader, composite, FluidShaderIds.SceneDepth, d.SceneDepth);
             cmd.SetComputeTextureParam(d.Shader, composite, FluidShaderIds.FluidColor, d.FluidColor);
 
-            var commands = new FluidSurfaceComputeCommands(cmd, d.Shader, d.Kernels, d.Resolved, d.Ints);
-            d.Constants.Set(ref commands);
+            var commands = new FluidSurfaceComputeCommands(cmd, d.Shader, d.Kernels, d.Resolved, d.ConstantBuffer);
+            commands.SetConstants(d.Constants);
             FluidSurfaceFrame.Record(ref commands, d.Targets, d.Passes, d.Particles);
         }
 

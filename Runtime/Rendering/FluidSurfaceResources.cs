@@ -33,12 +33,16 @@ namespace SoftBodyDynamics.Rendering
         public int LastEntries { get; private set; }
         public int LastDropped { get; private set; }
 
+        /// <summary>The constant buffer of the fluid's passes; null before <see cref="Ensure"/>.</summary>
+        public FluidSurfaceConstantBuffer Constants { get; private set; }
+
         /// <summary>The buffer <paramref name="buffer"/>; null for <see cref="FluidSurfaceBuffer.Particles"/> and before <see cref="Ensure"/>.</summary>
         public GraphicsBuffer this[FluidSurfaceBuffer buffer] => m_Buffers[(int)buffer];
 
-        /// <summary>Creates, or re-creates larger, every buffer too small for <paramref name="targets"/> and the tile capacity.</summary>
+        /// <summary>Creates the constant buffer once, and creates, or re-creates larger, every buffer too small for <paramref name="targets"/> and the tile capacity.</summary>
         public void Ensure(in FluidSurfaceTargets targets)
         {
+            Constants ??= new FluidSurfaceConstantBuffer();
             for (int b = 0; b < k_BufferCount; b++)
             {
                 var id = (FluidSurfaceBuffer)b;
@@ -109,6 +113,8 @@ namespace SoftBodyDynamics.Rendering
                 m_Buffers[b]?.Release();
                 m_Buffers[b] = null;
             }
+            Constants?.Dispose();
+            Constants = null;
             m_ReadbackPending = false;
         }
     }

@@ -3,6 +3,7 @@
 // structured buffers (row-major, row 0 at the bottom), so every pass runs the same on lavapipe and on each target.
 #ifndef SBD_FLUID_SURFACE_COMMON_INCLUDED
 #define SBD_FLUID_SURFACE_COMMON_INCLUDED
+#include "FluidSurfaceConstants.hlsl"
 
 // Threads per group of the particle kernels (FluidSurfaceLayout.ParticleGroup).
 #define SURFACE_PARTICLE_GROUP 64
@@ -20,7 +21,7 @@
 #define SURFACE_STAT_DRAWN 2     // particles in front of the near plane and on screen
 #define SURFACE_STAT_COUNT 4
 
-// _SurfaceCounts.w bits: the targets the composite reads besides depth (FluidSurfacePassList.Flags); a pass that is off
+// PassFlags bits: the targets the composite reads besides depth (FluidSurfacePassList.Flags); a pass that is off
 // was not dispatched this frame, so its target holds nothing to read.
 #define SURFACE_FLAG_THICKNESS 1u
 #define SURFACE_FLAG_NORMALS 2u
@@ -36,42 +37,17 @@ RWStructuredBuffer<float> _DepthOut;        // a filter's output
 RWStructuredBuffer<float2> _Thickness;      // x thickness (m), y mean attribute (0 cold – 1 hot) per thickness pixel
 RWStructuredBuffer<uint> _Normals;          // octahedral view-space normal, 16 + 16 bits, per depth pixel
 
-// Constants, computed on the CPU (FluidSurfaceConstants).
-float4 _ViewRow0;        // world → view, rows 0..2 (xyz rotation, w translation)
-float4 _ViewRow1;
-float4 _ViewRow2;
-float4 _DepthPinhole;    // focal length x, y (pixels), principal point x, y of the depth target
-float4 _ThicknessPinhole;
-float4 _ScreenPinhole;   // the same of the full-resolution screen
-uint4 _DepthSize;        // x width, y height (depth pixels), z tiles x, w tiles y
-uint4 _OtherSizes;       // x, y thickness target; z, w screen
-uint4 _SurfaceCounts;    // x particles, y tile-entry capacity, z thickness pixels per thread side in a tile (1 or 2), w pass flags (SURFACE_FLAG_*)
-uint4 _Composite;        // x depth divisor (1 full, 2 half), y look model (FluidLookModel), z 1 when texture row 0 is the top, w composite divisor
-float4 _SceneDepthParams; // Unity's _ZBufferParams of the camera depth texture: eye depth = 1 / (z·d + w)
-float4 _Splat;           // particle radius r (m), r², near plane (m), thickness quantum (m per unit)
-float4 _AttributeRange;  // x cold attribute, y 1/(hot − cold), zw unused
-float4 _Filter;          // world radius (m), largest radius (pixels), depth range μ (m), curvature step λ
-float4 _LookColour;      // rgb body colour, w scattering
-float4 _LookAbsorption;  // rgb absorption (1/m), w Fresnel F0
-float4 _LookEmission;    // rgb emission, w refraction per metre
-float4 _LookSurface;     // x specular power, y specular, z opacity, w toon bands
-float4 _LookOutline;     // rgb outline colour, w outline threshold on n·v
-float4 _LightDirection;  // xyz toward the light (view space), w largest refraction offset (pixels)
-float4 _LightColour;     // rgb light colour (linear), w unused
-float4 _SkyZenith;       // rgb sky straight up, w unused
-float4 _SkyHorizon;      // rgb sky at the horizon, w unused
-float4 _ViewUp;          // xyz world up in view space, w unused
-
 float3 ToView(float3 world)
 {
     float4 p = float4(world, 1.0);
-    return float3(dot(_ViewRow0, p), dot(_ViewRow1, p), dot(_ViewRow2, p));
+    return float3(dot(ViewRow0, p), dot(ViewRow1, p), dot(ViewRow2, p));
 }
 
-// The direction (not normalised, z = −1) of the ray through pixel (px, py) of a target with this pinhole.
-float3 PixelRay(float2 pixel, float4 pinhole)
+// The direction (not normalised, z = −1) of the ray through pixel (px, py) of a target with this focal length and
+// principal point.
+float3 PixelRay(float2 pixel, float2 focal, float2 centre)
 {
-    return float3((pixel.x - pinhole.z) / pinhole.x, (pixel.y - pinhole.w) / pinhole.y, -1.0);
+    return float3((pixel.x - centre.x) / focal.x, (pixel.y - centre.y) / focal.y, -1.0);
 }
 
 // The ray from the eye along d (z = −1) meets the sphere (view centre c, radius² r2): eye depth of the first hit and
@@ -119,9 +95,9 @@ float3 UnpackNormal(uint packed)
 }
 
 // Composite pixels: the screen divided by the composite divisor, rounded up (FluidSurfaceComposite.Size).
-uint2 CompositeSize() { return (_OtherSizes.zw + _Composite.w - 1u) / _Composite.w; }
+uint2 CompositeSize() { return (uint2(ScreenWidth, ScreenHeight) + CompositeDivisor - 1u) / CompositeDivisor; }
 
-uint DepthIndex(int2 p) { return (uint)p.y * _DepthSize.x + (uint)p.x; }
-bool InDepth(int2 p) { return p.x >= 0 && p.y >= 0 && p.x < (int)_DepthSize.x && p.y < (int)_DepthSize.y; }
+uint DepthIndex(int2 p) { return (uint)p.y * DepthWidth + (uint)p.x; }
+bool InDepth(int2 p) { return p.x >= 0 && p.y >= 0 && p.x < (int)DepthWidth && p.y < (int)DepthHeight; }
 
 #endif

@@ -5,7 +5,7 @@
 #include "FluidSurfaceCommon.hlsl"
 #include "FluidSurfaceScreenIO.hlsl"
 
-int2 ClampToScreen(int2 p) { return clamp(p, int2(0, 0), (int2)_OtherSizes.zw - 1); }
+int2 ClampToScreen(int2 p) { return clamp(p, int2(0, 0), int2(ScreenWidth, ScreenHeight) - 1); }
 
 // Bilinear scene colour at a continuous pixel position (centres at i + 0.5).
 float3 SceneColorBilinear(float2 x)
@@ -33,8 +33,8 @@ float2 ThicknessAt(float2 pixel)
     for (int k = 0; k < 4; k++)
     {
         int2 o = int2(k & 1, k >> 1);
-        int2 q = clamp(i + o, int2(0, 0), (int2)_OtherSizes.xy - 1);
-        float2 v = _Thickness[(uint)q.y * _OtherSizes.x + (uint)q.x];
+        int2 q = clamp(i + o, int2(0, 0), int2(ThicknessWidth, ThicknessHeight) - 1);
+        float2 v = _Thickness[(uint)q.y * ThicknessWidth + (uint)q.x];
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         if (v.x > 0.0)
         {
@@ -42,7 +42,7 @@ float2 ThicknessAt(float2 pixel)
             weights += w;
         }
     }
-    return weights > 0.0 ? sum / weights : float2(_Splat.x, 0.0);
+    return weights > 0.0 ? sum / weights : float2(ParticleRadius, 0.0);
 }
 
 // One thread per composite pixel c: every screen pixel, or every other one each way at half resolution (its centre at
@@ -53,9 +53,9 @@ void Composite(uint3 id : SV_DispatchThreadID)
     int2 c = (int2)id.xy;
     if (any(id.xy >= CompositeSize()))
         return;
-    float2 pixel = (float2(c) + 0.5) * (float)_Composite.w;
-    int2 s = min((int2)floor(pixel), (int2)_OtherSizes.zw - 1);
-    int2 d = min((int2)floor(pixel / (float)_Composite.x), (int2)_DepthSize.xy - 1);
+    float2 pixel = (float2(c) + 0.5) * (float)CompositeDivisor;
+    int2 s = min((int2)floor(pixel), int2(ScreenWidth, ScreenHeight) - 1);
+    int2 d = min((int2)floor(pixel / (float)DepthDivisor), int2(DepthWidth, DepthHeight) - 1);
     float z = _Depth[DepthIndex(d)];
     float sceneDepth = LoadSceneEyeDepth(s);
     if (z <= 0.0 || z >= sceneDepth)
@@ -67,9 +67,9 @@ void Composite(uint3 id : SV_DispatchThreadID)
     px.pixel = pixel;
     px.eyeDepth = z;
     // A target whose pass is off is not read: the look does not use it (FluidSurfacePassList).
-    px.normal = (_SurfaceCounts.w & SURFACE_FLAG_NORMALS) != 0u ? UnpackNormal(_Normals[DepthIndex(d)]) : float3(0.0, 0.0, 1.0);
-    px.view = -normalize(PixelRay(px.pixel, _ScreenPinhole));
-    float2 thickness = (_SurfaceCounts.w & SURFACE_FLAG_THICKNESS) != 0u ? ThicknessAt(pixel) : float2(_Splat.x, 0.0);
+    px.normal = (PassFlags & SURFACE_FLAG_NORMALS) != 0u ? UnpackNormal(_Normals[DepthIndex(d)]) : float3(0.0, 0.0, 1.0);
+    px.view = -normalize(PixelRay(px.pixel, ScreenFocal, ScreenCentre));
+    float2 thickness = (PassFlags & SURFACE_FLAG_THICKNESS) != 0u ? ThicknessAt(pixel) : float2(ParticleRadius, 0.0);
     px.thickness = thickness.x;
     px.heat = thickness.y;
     StoreFluidColor(c, float4(Shade(px), 1.0));

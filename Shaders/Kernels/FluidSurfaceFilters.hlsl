@@ -6,7 +6,7 @@
 
 // Filter radius on screen for a pixel at eye depth z: the world radius times f / z, clamped to the largest radius;
 // the Gaussian's σ is half of it.
-float FilterPixels(float z) { return min(_Filter.x * _DepthPinhole.x / z, _Filter.y); }
+float FilterPixels(float z) { return min(FilterRadius * DepthFocal.x / z, MaxFilterPixels); }
 
 // One separable pass along axis a. Narrow-range (Truong & Yuksel 2018, §4): samples more than μ behind the centre
 // belong to another surface and are skipped, samples more than μ in front are clamped to z₀ − μ, the rest weigh by a
@@ -20,7 +20,7 @@ float SeparablePass(int2 p, int2 a, bool narrow)
     float radius = FilterPixels(z0);
     int n = (int)ceil(radius);
     float inverseSigma2 = 4.0 / max(radius * radius, 1.0e-6);
-    float mu = _Filter.z;
+    float mu = DepthRange;
     float sum = 0.0, weights = 0.0;
     for (int i = -n; i <= n; i++)
     {
@@ -92,7 +92,7 @@ void CurvatureFlow(uint3 id : SV_DispatchThreadID)
     float z = _DepthIn[DepthIndex(p)];
     float zl = DepthAt(p + int2(-1, 0)), zr = DepthAt(p + int2(1, 0));
     float zd = DepthAt(p + int2(0, -1)), zu = DepthAt(p + int2(0, 1));
-    float mu = _Filter.z;
+    float mu = DepthRange;
     bool edge = z <= 0.0 || zl <= 0.0 || zr <= 0.0 || zd <= 0.0 || zu <= 0.0
         || abs(zl - z) > mu || abs(zr - z) > mu || abs(zd - z) > mu || abs(zu - z) > mu;
     if (edge)
@@ -103,7 +103,7 @@ void CurvatureFlow(uint3 id : SV_DispatchThreadID)
     float zul = DepthAt(p + int2(-1, 1)), zur = DepthAt(p + int2(1, 1));
     float zdl = DepthAt(p + int2(-1, -1)), zdr = DepthAt(p + int2(1, -1));
     bool corners = zul > 0.0 && zur > 0.0 && zdl > 0.0 && zdr > 0.0;
-    float c = 1.0 / _DepthPinhole.x;
+    float c = 1.0 / DepthFocal.x;
     float c2 = c * c;
     float zx = 0.5 * (zr - zl), zy = 0.5 * (zu - zd);
     float zxx = zr - 2.0 * z + zl, zyy = zu - 2.0 * z + zd;
@@ -114,7 +114,7 @@ void CurvatureFlow(uint3 id : SV_DispatchThreadID)
     float ex = 0.5 * zx * dDx - zxx * d;
     float ey = 0.5 * zy * dDy - zyy * d;
     float h = c * (ex + ey) / (2.0 * d * sqrt(d));
-    _DepthOut[DepthIndex(p)] = z - 2.0 * _Filter.w * c * z * h;
+    _DepthOut[DepthIndex(p)] = z - 2.0 * CurvatureStep * c * z * h;
 }
 
 #endif

@@ -5,7 +5,7 @@
 #define SBD_FLUID_SURFACE_NORMALS_INCLUDED
 #include "FluidSurfaceCommon.hlsl"
 
-float3 ViewPositionAt(int2 p, float z) { return PixelRay(float2(p) + 0.5, _DepthPinhole) * z; }
+float3 ViewPositionAt(int2 p, float z) { return PixelRay(float2(p) + 0.5, DepthFocal, DepthCentre) * z; }
 
 // The tangent along axis a at p (depth z, position v), or a camera-facing step when neither side is usable.
 float3 Tangent(int2 p, int2 a, float z, float3 v)
@@ -13,14 +13,14 @@ float3 Tangent(int2 p, int2 a, float z, float3 v)
     int2 qf = p + a, qb = p - a;
     float zf = InDepth(qf) ? _Depth[DepthIndex(InDepth(qf) ? qf : p)] : 0.0;
     float zb = InDepth(qb) ? _Depth[DepthIndex(InDepth(qb) ? qb : p)] : 0.0;
-    float mu = _Filter.z;
+    float mu = DepthRange;
     bool useF = zf > 0.0 && abs(zf - z) <= mu;
     bool useB = zb > 0.0 && abs(zb - z) <= mu;
     if (useF && (!useB || abs(zf - z) <= abs(zb - z)))
         return ViewPositionAt(qf, zf) - v;
     if (useB)
         return v - ViewPositionAt(qb, zb);
-    return float3(a.x, a.y, 0.0) * (z / _DepthPinhole.x);
+    return float3(a.x, a.y, 0.0) * (z / DepthFocal.x);
 }
 
 [numthreads(SURFACE_TILE_GROUP, SURFACE_TILE_GROUP, 1)]

@@ -11,8 +11,8 @@ StructuredBuffer<float4> _SceneColor;      // linear RGB
 StructuredBuffer<float> _SceneEyeDepth;    // eye depth (m) of the opaque scene
 RWStructuredBuffer<float4> _FluidColor;    // rgb fluid colour, a coverage (0 or 1)
 
-float4 LoadSceneColor(int2 p) { return _SceneColor[(uint)p.y * _OtherSizes.z + (uint)p.x]; }
-float LoadSceneEyeDepth(int2 p) { return _SceneEyeDepth[(uint)p.y * _OtherSizes.z + (uint)p.x]; }
+float4 LoadSceneColor(int2 p) { return _SceneColor[(uint)p.y * ScreenWidth + (uint)p.x]; }
+float LoadSceneEyeDepth(int2 p) { return _SceneEyeDepth[(uint)p.y * ScreenWidth + (uint)p.x]; }
 void StoreFluidColor(int2 c, float4 colour) { _FluidColor[(uint)c.y * CompositeSize().x + (uint)c.x] = colour; }
 #else
 Texture2D<float4> _SceneColor;             // _CameraOpaqueTexture
@@ -20,9 +20,9 @@ Texture2D<float> _SceneDepth;              // _CameraDepthTexture (device depth)
 RWTexture2D<float4> _FluidColor;
 
 // Row p.y of a target of this height, counted from the top where the platform's textures start there.
-int2 TexelOf(int2 p, uint height) { return _Composite.z != 0u ? int2(p.x, (int)height - 1 - p.y) : p; }
-float4 LoadSceneColor(int2 p) { return _SceneColor.Load(int3(TexelOf(p, _OtherSizes.w), 0)); }
-float LoadSceneEyeDepth(int2 p) { return 1.0 / (_SceneDepthParams.z * _SceneDepth.Load(int3(TexelOf(p, _OtherSizes.w), 0)) + _SceneDepthParams.w); }
+int2 TexelOf(int2 p, uint height) { return FlipY != 0u ? int2(p.x, (int)height - 1 - p.y) : p; }
+float4 LoadSceneColor(int2 p) { return _SceneColor.Load(int3(TexelOf(p, ScreenHeight), 0)); }
+float LoadSceneEyeDepth(int2 p) { return 1.0 / (SceneDepthScale * _SceneDepth.Load(int3(TexelOf(p, ScreenHeight), 0)) + SceneDepthOffset); }
 void StoreFluidColor(int2 c, float4 colour) { _FluidColor[TexelOf(c, CompositeSize().y)] = colour; }
 #endif
 

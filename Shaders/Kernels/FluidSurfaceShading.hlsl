@@ -17,19 +17,19 @@ struct SurfacePixel
 // Sky seen along the view-space direction r: horizon to zenith by elevation, half the horizon below it.
 float3 Sky(float3 r)
 {
-    float e = dot(r, _ViewUp.xyz);
-    return e >= 0.0 ? lerp(_SkyHorizon.rgb, _SkyZenith.rgb, e) : _SkyHorizon.rgb * (1.0 + 0.5 * e);
+    float e = dot(r, ViewUp);
+    return e >= 0.0 ? lerp(SkyHorizon, SkyZenith, e) : SkyHorizon * (1.0 + 0.5 * e);
 }
 
 float3 ShadeLit(SurfacePixel px)
 {
     float3 n = px.normal;
-    float3 l = _LightDirection.xyz;
+    float3 l = LightDirection;
     // Refraction: the background seen through the fluid shifts along the normal by the thickness (Snell's law's
     // screen-space stand-in), clamped; where the shifted point is nearer than the fluid, the unshifted one is used.
-    float2 offset = n.xy * (_LookEmission.w * px.thickness * _ScreenPinhole.x / px.eyeDepth);
+    float2 offset = n.xy * (Refraction * px.thickness * ScreenFocal.x / px.eyeDepth);
     float len = length(offset);
-    offset *= len > _LightDirection.w ? _LightDirection.w / len : 1.0;
+    offset *= len > MaxRefractionPixels ? MaxRefractionPixels / len : 1.0;
     float2 q = px.pixel + offset;
     int2 qi = ClampToScreen((int2)floor(q));
     if (LoadSceneEyeDepth(qi) < px.eyeDepth)
@@ -37,32 +37,32 @@ float3 ShadeLit(SurfacePixel px)
     float3 background = SceneColorBilinear(q);
     // Beer–Lambert: T = e^(−a t); the absorbed share is replaced by the body colour times the scattering, lit by the
     // sky and the light.
-    float3 transmittance = exp(-_LookAbsorption.rgb * px.thickness);
-    float3 lighting = lerp(_SkyHorizon.rgb, _LightColour.rgb, saturate(dot(n, l)));
-    float3 body = _LookColour.rgb * _LookColour.w * lighting;
+    float3 transmittance = exp(-Absorption * px.thickness);
+    float3 lighting = lerp(SkyHorizon, LightColour, saturate(dot(n, l)));
+    float3 body = BodyColour * Scattering * lighting;
     float3 transmitted = background * transmittance + body * (1.0 - transmittance);
     // Schlick: F = F0 + (1 − F0)(1 − n·v)⁵, mixing in the sky along the reflected ray.
     float cosine = saturate(dot(n, px.view));
-    float fresnel = _LookAbsorption.w + (1.0 - _LookAbsorption.w) * pow(1.0 - cosine, 5.0);
+    float fresnel = FresnelF0 + (1.0 - FresnelF0) * pow(1.0 - cosine, 5.0);
     float3 reflected = Sky(reflect(-px.view, n));
     float3 h = normalize(l + px.view);
-    float3 highlight = _LookSurface.y * pow(saturate(dot(n, h)), _LookSurface.x) * _LightColour.rgb;
-    float3 emission = _LookEmission.rgb * (px.heat * px.heat);
+    float3 highlight = Specular * pow(saturate(dot(n, h)), SpecularPower) * LightColour;
+    float3 emission = Emission * (px.heat * px.heat);
     return lerp(transmitted, reflected, fresnel) + highlight + emission;
 }
 
 float3 ShadeUnlit(SurfacePixel px, uint model)
 {
     float3 background = LoadSceneColor(ClampToScreen((int2)floor(px.pixel))).rgb;
-    float3 colour = _LookColour.rgb;
-    float opacity = _LookSurface.z;
+    float3 colour = BodyColour;
+    float opacity = Opacity;
     if (model == 2u)
-        opacity *= 1.0 - exp(-_LookAbsorption.x * px.thickness);
+        opacity *= 1.0 - exp(-Absorption.x * px.thickness);
     else if (model == 3u)
     {
-        float bands = max(_LookSurface.w, 1.0);
-        float lit = floor(saturate(dot(px.normal, _LightDirection.xyz)) * bands) / bands;
-        colour = dot(px.normal, px.view) < _LookOutline.w ? _LookOutline.rgb : colour * (0.4 + 0.6 * lit);
+        float bands = max(ToonBands, 1.0);
+        float lit = floor(saturate(dot(px.normal, LightDirection)) * bands) / bands;
+        colour = dot(px.normal, px.view) < OutlineThreshold ? OutlineColour : colour * (0.4 + 0.6 * lit);
         opacity = 1.0;
     }
     return lerp(background, colour, opacity);
@@ -70,7 +70,7 @@ float3 ShadeUnlit(SurfacePixel px, uint model)
 
 float3 Shade(SurfacePixel px)
 {
-    uint model = _Composite.y;
+    uint model = LookModel;
     return model == 0u ? ShadeLit(px) : ShadeUnlit(px, model);
 }
 

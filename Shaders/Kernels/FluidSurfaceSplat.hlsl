@@ -16,7 +16,7 @@ uint LoadChunk(uint flat, uint base, uint end)
     if (flat < n)
     {
         float4 p = _Particles[_TileEntries[base + flat]];
-        gs_Spheres[flat] = float4(ToView(p.xyz), saturate((p.w - _AttributeRange.x) * _AttributeRange.y));
+        gs_Spheres[flat] = float4(ToView(p.xyz), saturate((p.w - ColdAttribute) * InverseAttributeSpan));
     }
     GroupMemoryBarrierWithGroupSync();
     return n;
@@ -25,8 +25,8 @@ uint LoadChunk(uint flat, uint base, uint end)
 // First and one-past-last entry of a tile, clamped to the entries that fit.
 uint2 TileRange(uint2 tile)
 {
-    uint t = tile.y * _DepthSize.z + tile.x;
-    return uint2(min(_TileStart[t], _SurfaceCounts.y), min(_TileStart[t + 1], _SurfaceCounts.y));
+    uint t = tile.y * TilesX + tile.x;
+    return uint2(min(_TileStart[t], TileCapacity), min(_TileStart[t + 1], TileCapacity));
 }
 
 [numthreads(SURFACE_TILE_GROUP, SURFACE_TILE_GROUP, 1)]
@@ -38,7 +38,7 @@ void SplatDepth(uint3 group : SV_GroupID, uint3 thread : SV_GroupThreadID)
     float near[4] = { 3.0e38, 3.0e38, 3.0e38, 3.0e38 };
     float3 rays[4];
     for (int k = 0; k < 4; k++)
-        rays[k] = PixelRay(float2(origin + int2(k & 1, k >> 1)) + 0.5, _DepthPinhole);
+        rays[k] = PixelRay(float2(origin + int2(k & 1, k >> 1)) + 0.5, DepthFocal, DepthCentre);
     for (uint base = range.x; base < range.y; base += SURFACE_CHUNK)
     {
         uint n = LoadChunk(flat, base, range.y);
@@ -47,7 +47,7 @@ void SplatDepth(uint3 group : SV_GroupID, uint3 thread : SV_GroupThreadID)
             float3 c = gs_Spheres[i].xyz;
             for (int k = 0; k < 4; k++)
             {
-                float2 hit = RaySphere(rays[k], c, _Splat.y);
+                float2 hit = RaySphere(rays[k], c, ParticleRadiusSquared);
                 if (hit.y > 0.0)
                     near[k] = min(near[k], hit.x);
             }
@@ -67,14 +67,14 @@ void SplatThickness(uint3 group : SV_GroupID, uint3 thread : SV_GroupThreadID)
 {
     uint flat = thread.y * SURFACE_TILE_GROUP + thread.x;
     uint2 range = TileRange(group.xy);
-    int side = (int)_SurfaceCounts.z;                       // thickness pixels per thread side (1 or 2)
+    int side = (int)ThicknessPixelsPerThread;
     int2 origin = (int2)group.xy * (SURFACE_TILE_GROUP * side) + (int2)thread.xy * side;
     uint sums[4] = { 0u, 0u, 0u, 0u };
     uint attributes[4] = { 0u, 0u, 0u, 0u };
     float3 rays[4];
     for (int k = 0; k < 4; k++)
-        rays[k] = PixelRay(float2(origin + int2(k & 1, k >> 1)) + 0.5, _ThicknessPinhole);
-    float inverseQuantum = 1.0 / _Splat.w;
+        rays[k] = PixelRay(float2(origin + int2(k & 1, k >> 1)) + 0.5, ThicknessFocal, ThicknessCentre);
+    float inverseQuantum = 1.0 / ThicknessQuantum;
     for (uint base = range.x; base < range.y; base += SURFACE_CHUNK)
     {
         uint n = LoadChunk(flat, base, range.y);
@@ -83,7 +83,7 @@ void SplatThickness(uint3 group : SV_GroupID, uint3 thread : SV_GroupThreadID)
             float4 s = gs_Spheres[i];
             for (int k = 0; k < side * side; k++)
             {
-                float2 hit = RaySphere(rays[k], s.xyz, _Splat.y);
+                float2 hit = RaySphere(rays[k], s.xyz, ParticleRadiusSquared);
                 sums[k] += (uint)round(hit.y * inverseQuantum);
                 attributes[k] += (uint)round(hit.y * s.w * inverseQuantum);
             }
@@ -93,9 +93,9 @@ void SplatThickness(uint3 group : SV_GroupID, uint3 thread : SV_GroupThreadID)
     for (int k = 0; k < side * side; k++)
     {
         int2 p = origin + int2(k & 1, k >> 1);
-        if (p.x < (int)_OtherSizes.x && p.y < (int)_OtherSizes.y)
-            _Thickness[(uint)p.y * _OtherSizes.x + (uint)p.x] =
-                float2(sums[k] * _Splat.w, sums[k] > 0u ? (float)attributes[k] / (float)sums[k] : 0.0);
+        if (p.x < (int)ThicknessWidth && p.y < (int)ThicknessHeight)
+            _Thickness[(uint)p.y * ThicknessWidth + (uint)p.x] =
+                float2(sums[k] * ThicknessQuantum, sums[k] > 0u ? (float)attributes[k] / (float)sums[k] : 0.0);
     }
 }
 

@@ -9,22 +9,22 @@ int4 TileRect(uint particle)
 {
     float3 c = ToView(_Particles[particle].xyz);
     float z = -c.z;
-    float r = _Splat.x;
-    if (!(z - r > _Splat.z) || any(abs(c) > 3.0e38))
+    float r = ParticleRadius;
+    if (!(z - r > NearPlane) || any(abs(c) > 3.0e38))
         return int4(1, 0, 0, 0);
-    float2 ex = SphereExtent(c.x, z, r, _DepthPinhole.x, _DepthPinhole.z);
-    float2 ey = SphereExtent(c.y, z, r, _DepthPinhole.y, _DepthPinhole.w);
-    if (ex.y < 0.0 || ey.y < 0.0 || ex.x > (float)_DepthSize.x || ey.x > (float)_DepthSize.y)
+    float2 ex = SphereExtent(c.x, z, r, DepthFocal.x, DepthCentre.x);
+    float2 ey = SphereExtent(c.y, z, r, DepthFocal.y, DepthCentre.y);
+    if (ex.y < 0.0 || ey.y < 0.0 || ex.x > (float)DepthWidth || ey.x > (float)DepthHeight)
         return int4(1, 0, 0, 0);
     int2 lo = (int2)floor(max(float2(ex.x, ey.x), 0.0)) / SURFACE_TILE;
-    int2 hi = (int2)floor(min(float2(ex.y, ey.y), float2(_DepthSize.xy) - 1.0)) / SURFACE_TILE;
+    int2 hi = (int2)floor(min(float2(ex.y, ey.y), float2(DepthWidth, DepthHeight) - 1.0)) / SURFACE_TILE;
     return int4(lo, hi);
 }
 
 [numthreads(SURFACE_SCAN_GROUP, 1, 1)]
 void ClearTiles(uint3 id : SV_DispatchThreadID)
 {
-    uint tiles = _DepthSize.z * _DepthSize.w;
+    uint tiles = TilesX * TilesY;
     if (id.x < SURFACE_STAT_COUNT)
         _SurfaceStats[id.x] = 0;
     if (id.x < tiles)
@@ -34,7 +34,7 @@ void ClearTiles(uint3 id : SV_DispatchThreadID)
 [numthreads(SURFACE_PARTICLE_GROUP, 1, 1)]
 void CountTiles(uint3 id : SV_DispatchThreadID)
 {
-    if (id.x >= _SurfaceCounts.x)
+    if (id.x >= ParticleCount)
         return;
     int4 rect = TileRect(id.x);
     if (rect.x > rect.z)
@@ -42,7 +42,7 @@ void CountTiles(uint3 id : SV_DispatchThreadID)
     InterlockedAdd(_SurfaceStats[SURFACE_STAT_DRAWN], 1u);
     for (int ty = rect.y; ty <= rect.w; ty++)
         for (int tx = rect.x; tx <= rect.z; tx++)
-            InterlockedAdd(_TileCounts[(uint)ty * _DepthSize.z + (uint)tx], 1u);
+            InterlockedAdd(_TileCounts[(uint)ty * TilesX + (uint)tx], 1u);
 }
 
 // Exclusive scan of the tile counts in one group: each thread sums a run of consecutive tiles, the group scans the
@@ -52,7 +52,7 @@ groupshared uint gs_RunTotals[SURFACE_SCAN_GROUP];
 [numthreads(SURFACE_SCAN_GROUP, 1, 1)]
 void ScanTiles(uint3 id : SV_GroupThreadID)
 {
-    uint tiles = _DepthSize.z * _DepthSize.w;
+    uint tiles = TilesX * TilesY;
     uint run = (tiles + SURFACE_SCAN_GROUP - 1) / SURFACE_SCAN_GROUP;
     uint first = id.x * run;
     uint last = min(first + run, tiles);
@@ -87,7 +87,7 @@ void ScanTiles(uint3 id : SV_GroupThreadID)
 [numthreads(SURFACE_PARTICLE_GROUP, 1, 1)]
 void BinParticles(uint3 id : SV_DispatchThreadID)
 {
-    if (id.x >= _SurfaceCounts.x)
+    if (id.x >= ParticleCount)
         return;
     int4 rect = TileRect(id.x);
     if (rect.x > rect.z)
@@ -96,8 +96,8 @@ void BinParticles(uint3 id : SV_DispatchThreadID)
         for (int tx = rect.x; tx <= rect.z; tx++)
         {
             uint slot;
-            InterlockedAdd(_TileCounts[(uint)ty * _DepthSize.z + (uint)tx], 1u, slot);
-            if (slot < _SurfaceCounts.y)
+            InterlockedAdd(_TileCounts[(uint)ty * TilesX + (uint)tx], 1u, slot);
+            if (slot < TileCapacity)
                 _TileEntries[slot] = id.x;
             else
                 InterlockedAdd(_SurfaceStats[SURFACE_STAT_DROPPED], 1u);

@@ -81,9 +81,7 @@ namespace SoftBodyDynamics.Lavapipe
             m_Shader.Dispatch(m_Kernels[(int)kernel], groupsX, groupsY);
         }
 
-        public void SetVector(int global, float4 value) => m_Shader.SetVector(FluidSurfaceConstants.Names[global], value);
-
-        public void SetInts(int global, int4 value) => m_Shader.SetInts(FluidSurfaceConstants.Names[global], value);
+        public void SetConstants(in FluidSurfaceConstants constants) => m_Shader.SetConstantBuffer(FluidSurfaceConstants.BufferName, constants);
 
         void Allocate(in FluidSurfaceTargets t, int particles, int screenPixels)
         {
@@ -129,7 +127,7 @@ namespace SoftBodyDynamics.Lavapipe
                 if (PoisonThickness)
                     m_Buffers[(int)FluidSurfaceBuffer.Thickness].As<float2>().Fill(new float2(float.PositiveInfinity));
                 frame.Constants = FluidSurfaceConstants.Of(camera, settings, look, lighting, particles.Length, TileCapacity);
-                frame.Constants.Set(ref self);
+                SetConstants(frame.Constants);
                 m_Dispatches = 0;
                 FluidSurfaceFrame.RecordSplats(ref self, t, frame.Passes, particles.Length);
                 frame.SplatMs = m_Shader.Submit();

@@ -80,9 +80,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             FluidSurfaceFrame.Record(ref self, Targets, Passes, Scene.Particles.Length);
         }
 
-        public void SetVector(int global, float4 value) { }
-
-        public void SetInts(int global, int4 value) { }
+        /// <summary>Nothing to upload: the reference passes read <see cref="Constants"/>.</summary>
+        public void SetConstants(in FluidSurfaceConstants constants) { }
 
         public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) =>
             m_Bound[(int)kernel * s_Slots + (int)slot] = buffer;

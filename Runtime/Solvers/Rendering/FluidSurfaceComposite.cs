@@ -29,12 +29,12 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
-        static int ClampX(in FluidSurfaceConstants k, int x) => math.clamp(x, 0, k.OtherSizes.z - 1);
-        static int ClampY(in FluidSurfaceConstants k, int y) => math.clamp(y, 0, k.OtherSizes.w - 1);
+        static int ClampX(in FluidSurfaceConstants k, int x) => math.clamp(x, 0, (int)k.ScreenWidth - 1);
+        static int ClampY(in FluidSurfaceConstants k, int y) => math.clamp(y, 0, (int)k.ScreenHeight - 1);
 
-        static float3 SceneColour(in FluidSurfaceConstants k, in Inputs i, int x, int y) => i.SceneColour[y * k.OtherSizes.z + x].xyz;
+        static float3 SceneColour(in FluidSurfaceConstants k, in Inputs i, int x, int y) => i.SceneColour[y * (int)k.ScreenWidth + x].xyz;
 
-        static float SceneEyeDepth(in FluidSurfaceConstants k, in Inputs i, int x, int y) => i.SceneEyeDepth[y * k.OtherSizes.z + x];
+        static float SceneEyeDepth(in FluidSurfaceConstants k, in Inputs i, int x, int y) => i.SceneEyeDepth[y * (int)k.ScreenWidth + x];
 
         /// <summary>Bilinear scene colour at a continuous pixel position (centres at i + 0.5), clamped to the screen.</summary>
         static float3 SceneColourBilinear(in FluidSurfaceConstants k, in Inputs i, float px, float py)
@@ -60,8 +60,8 @@ namespace SoftBodyDynamics.Solvers
             for (int n = 0; n < 4; n++)
             {
                 int ox = n & 1, oy = n >> 1;
-                int qx = math.clamp(bx + ox, 0, k.OtherSizes.x - 1), qy = math.clamp(by + oy, 0, k.OtherSizes.y - 1);
-                float2 v = i.Thickness[qy * k.OtherSizes.x + qx];
+                int qx = math.clamp(bx + ox, 0, (int)k.ThicknessWidth - 1), qy = math.clamp(by + oy, 0, (int)k.ThicknessHeight - 1);
+                float2 v = i.Thickness[qy * (int)k.ThicknessWidth + qx];
                 float w = (ox == 1 ? fx : 1f - fx) * (oy == 1 ? fy : 1f - fy);
                 if (v.x > 0f)
                 {
@@ -70,14 +70,14 @@ namespace SoftBodyDynamics.Solvers
                     weights += w;
                 }
             }
-            return weights > 0f ? new float2(sumT / weights, sumA / weights) : new float2(k.Splat.x, 0f);
+            return weights > 0f ? new float2(sumT / weights, sumA / weights) : new float2(k.ParticleRadius, 0f);
         }
 
         /// <summary>Sky along the view-space direction r: horizon to zenith by elevation, half the horizon below it.</summary>
         static float3 Sky(in FluidSurfaceConstants k, float3 r)
         {
-            float e = math.dot(r, k.ViewUp.xyz);
-            return e >= 0f ? math.lerp(k.SkyHorizon.xyz, k.SkyZenith.xyz, e) : k.SkyHorizon.xyz * (1f + 0.5f * e);
+            float e = math.dot(r, k.ViewUp);
+            return e >= 0f ? math.lerp(k.SkyHorizon, k.SkyZenith, e) : k.SkyHorizon * (1f + 0.5f * e);
         }
 
         static float3 Exp(float3 v) => new float3(math.exp(v.x), math.exp(v.y), math.exp(v.z));
@@ -90,11 +90,11 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         static float3 ShadeLit(in FluidSurfaceConstants k, in Inputs i, float px, float py, float eyeDepth, float3 n, float3 view, float thickness, float heat)
         {
-            float3 l = k.LightDirection.xyz;
-            float scale = k.LookEmission.w * thickness * k.ScreenPinhole.x / eyeDepth;
+            float3 l = k.LightDirection;
+            float scale = k.Refraction * thickness * k.ScreenFocal.x / eyeDepth;
             float ox = n.x * scale, oy = n.y * scale;
             float len = math.sqrt(ox * ox + oy * oy);
-            float clampScale = len > k.LightDirection.w ? k.LightDirection.w / len : 1f;
+            float clampScale = len > k.MaxRefractionPixels ? k.MaxRefractionPixels / len : 1f;
             ox *= clampScale;
             oy *= clampScale;
             float qx = px + ox, qy = py + oy;
@@ -104,17 +104,17 @@ namespace SoftBodyDynamics.Solvers
                 qy = py;
             }
             float3 background = SceneColourBilinear(k, i, qx, qy);
-            float3 transmittance = Exp(-k.LookAbsorption.xyz * thickness);
-            float3 lighting = math.lerp(k.SkyHorizon.xyz, k.LightColour.xyz, math.saturate(math.dot(n, l)));
-            float3 body = k.LookColour.xyz * k.LookColour.w * lighting;
+            float3 transmittance = Exp(-k.Absorption * thickness);
+            float3 lighting = math.lerp(k.SkyHorizon, k.LightColour, math.saturate(math.dot(n, l)));
+            float3 body = k.BodyColour * k.Scattering * lighting;
             float3 transmitted = background * transmittance + body * (1f - transmittance);
             float cosine = math.saturate(math.dot(n, view));
-            float fresnel = k.LookAbsorption.w + (1f - k.LookAbsorption.w) * math.pow(1f - cosine, 5f);
+            float fresnel = k.FresnelF0 + (1f - k.FresnelF0) * math.pow(1f - cosine, 5f);
             float3 incident = -view;
             float3 reflected = Sky(k, incident - 2f * math.dot(n, incident) * n);
             float3 h = math.normalize(l + view);
-            float3 highlight = k.LookSurface.y * math.pow(math.saturate(math.dot(n, h)), k.LookSurface.x) * k.LightColour.xyz;
-            float3 emission = k.LookEmission.xyz * (heat * heat);
+            float3 highlight = k.Specular * math.pow(math.saturate(math.dot(n, h)), k.SpecularPower) * k.LightColour;
+            float3 emission = k.Emission * (heat * heat);
             return math.lerp(transmitted, reflected, fresnel) + highlight + emission;
         }
 
@@ -122,23 +122,23 @@ namespace SoftBodyDynamics.Solvers
         static float3 ShadeUnlit(in FluidSurfaceConstants k, in Inputs i, float px, float py, float3 n, float3 view, float thickness, int model)
         {
             float3 background = SceneColour(k, i, ClampX(k, (int)math.floor(px)), ClampY(k, (int)math.floor(py)));
-            float3 colour = k.LookColour.xyz;
-            float opacity = k.LookSurface.z;
+            float3 colour = k.BodyColour;
+            float opacity = k.Opacity;
             if (model == 2)
-                opacity *= 1f - math.exp(-k.LookAbsorption.x * thickness);
+                opacity *= 1f - math.exp(-k.Absorption.x * thickness);
             else if (model == 3)
             {
-                float bands = math.max(k.LookSurface.w, 1f);
-                float lit = math.floor(math.saturate(math.dot(n, k.LightDirection.xyz)) * bands) / bands;
-                colour = math.dot(n, view) < k.LookOutline.w ? k.LookOutline.xyz : colour * (0.4f + 0.6f * lit);
+                float bands = math.max(k.ToonBands, 1f);
+                float lit = math.floor(math.saturate(math.dot(n, k.LightDirection)) * bands) / bands;
+                colour = math.dot(n, view) < k.OutlineThreshold ? k.OutlineColour : colour * (0.4f + 0.6f * lit);
                 opacity = 1f;
             }
             return math.lerp(background, colour, opacity);
         }
 
-        /// <summary>Composite pixels of the target (the screen divided by _Composite.w, rounded up).</summary>
+        /// <summary>Composite pixels of the target (the screen divided by CompositeDivisor, rounded up).</summary>
         public static int2 Size(in FluidSurfaceConstants k) =>
-            new int2((k.OtherSizes.z + k.Composite.w - 1) / k.Composite.w, (k.OtherSizes.w + k.Composite.w - 1) / k.Composite.w);
+            new int2((int)((k.ScreenWidth + k.CompositeDivisor - 1) / k.CompositeDivisor), (int)((k.ScreenHeight + k.CompositeDivisor - 1) / k.CompositeDivisor));
 
         /// <summary>
         /// The composite: rgb fluid colour and coverage (0 or 1) per composite pixel (every screen pixel, or every other one
@@ -148,14 +148,14 @@ namespace SoftBodyDynamics.Solvers
         public static void Composite(in FluidSurfaceConstants k, in Inputs i, Span<float4> output)
         {
             int2 size = Size(k);
-            float divisor = k.Composite.w;
+            float divisor = k.CompositeDivisor;
             for (int y = 0; y < size.y; y++)
                 for (int x = 0; x < size.x; x++)
                 {
                     float px = (x + 0.5f) * divisor, py = (y + 0.5f) * divisor;
-                    int sx = math.min((int)math.floor(px), k.OtherSizes.z - 1), sy = math.min((int)math.floor(py), k.OtherSizes.w - 1);
-                    int dx = math.min((int)math.floor(px / k.Composite.x), k.DepthSize.x - 1), dy = math.min((int)math.floor(py / k.Composite.x), k.DepthSize.y - 1);
-                    float z = i.Depth[dy * k.DepthSize.x + dx];
+                    int sx = math.min((int)math.floor(px), (int)k.ScreenWidth - 1), sy = math.min((int)math.floor(py), (int)k.ScreenHeight - 1);
+                    int dx = math.min((int)math.floor(px / k.DepthDivisor), (int)k.DepthWidth - 1), dy = math.min((int)math.floor(py / k.DepthDivisor), (int)k.DepthHeight - 1);
+                    float z = i.Depth[dy * (int)k.DepthWidth + dx];
                     float sceneDepth = SceneEyeDepth(k, i, sx, sy);
                     if (z <= 0f || z >= sceneDepth)
                     {
@@ -164,12 +164,12 @@ namespace SoftBodyDynamics.Solvers
                     }
                     // A target whose pass is off is not read: the look does not use it (FluidSurfacePassList).
                     float3 n = (k.PassFlags & FluidSurfacePassList.NormalsFlag) != 0
-                        ? FluidSurfacePasses.UnpackNormal(i.Normals[dy * k.DepthSize.x + dx]) : new float3(0f, 0f, 1f);
-                    float3 view = -math.normalize(FluidSurfacePasses.PixelRay(px, py, k.ScreenPinhole));
-                    float2 t = (k.PassFlags & FluidSurfacePassList.ThicknessFlag) != 0 ? ThicknessAt(k, i, px, py) : new float2(k.Splat.x, 0f);
-                    float3 c = k.Composite.y == 0
+                        ? FluidSurfacePasses.UnpackNormal(i.Normals[dy * (int)k.DepthWidth + dx]) : new float3(0f, 0f, 1f);
+                    float3 view = -math.normalize(FluidSurfacePasses.PixelRay(px, py, k.ScreenFocal, k.ScreenCentre));
+                    float2 t = (k.PassFlags & FluidSurfacePassList.ThicknessFlag) != 0 ? ThicknessAt(k, i, px, py) : new float2(k.ParticleRadius, 0f);
+                    float3 c = k.LookModel == 0
                         ? ShadeLit(k, i, px, py, z, n, view, t.x, t.y)
-                        : ShadeUnlit(k, i, px, py, n, view, t.x, k.Composite.y);
+                        : ShadeUnlit(k, i, px, py, n, view, t.x, (int)k.LookModel);
                     output[y * size.x + x] = new float4(c, 1f);
                 }
         }

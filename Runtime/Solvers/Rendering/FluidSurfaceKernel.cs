@@ -44,10 +44,11 @@ namespace SoftBodyDynamics.Solvers
     /// <summary>What records the surface passes: Unity's command buffer, or the lavapipe harness.</summary>
     public interface IFluidSurfaceCommands
     {
-        /// <summary>Sets global <paramref name="global"/> of <see cref="FluidSurfaceConstants.Names"/> (a float4).</summary>
-        void SetVector(int global, Unity.Mathematics.float4 value);
-        /// <summary>Sets global <paramref name="global"/> of <see cref="FluidSurfaceConstants.Names"/> (a uint4, given as int4 bits).</summary>
-        void SetInts(int global, Unity.Mathematics.int4 value);
+        /// <summary>
+        /// Uploads <paramref name="constants"/> whole (<see cref="FluidSurfaceConstants.Bytes"/> bytes) and binds them as
+        /// the kernels' constant buffer <see cref="FluidSurfaceConstants.BufferName"/> for the dispatches that follow.
+        /// </summary>
+        void SetConstants(in FluidSurfaceConstants constants);
         /// <summary>Points the kernel's depth slot at one of the two depth buffers.</summary>
         void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer);
         void Dispatch(FluidSurfaceKernel kernel, int groupsX, int groupsY);

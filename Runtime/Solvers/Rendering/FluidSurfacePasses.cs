@@ -18,9 +18,9 @@ namespace SoftBodyDynamics.Solvers
             return new float3(math.dot(c.ViewRow0, p), math.dot(c.ViewRow1, p), math.dot(c.ViewRow2, p));
         }
 
-        /// <summary>Direction (z = −1) of the ray through the pixel position (x, y) of a target with this pinhole.</summary>
-        public static float3 PixelRay(float x, float y, float4 pinhole) =>
-            new float3((x - pinhole.z) / pinhole.x, (y - pinhole.w) / pinhole.y, -1f);
+        /// <summary>Direction (z = −1) of the ray through the pixel position (x, y) of a target with this focal length and principal point.</summary>
+        public static float3 PixelRay(float x, float y, float2 focal, float2 centre) =>
+            new float3((x - centre.x) / focal.x, (y - centre.y) / focal.y, -1f);
 
         /// <summary>
         /// Eye depth of the first hit and chord length of the ray along d with the sphere (view centre c, radius² r2);
@@ -52,23 +52,23 @@ namespace SoftBodyDynamics.Solvers
         {
             float3 c = ToView(k, world);
             float z = -c.z;
-            float r = k.Splat.x;
-            if (!(z - r > k.Splat.z) || math.any(math.abs(c) > 3.0e38f))
+            float r = k.ParticleRadius;
+            if (!(z - r > k.NearPlane) || math.any(math.abs(c) > 3.0e38f))
                 return new int4(1, 0, 0, 0);
-            float2 ex = SphereExtent(c.x, z, r, k.DepthPinhole.x, k.DepthPinhole.z);
-            float2 ey = SphereExtent(c.y, z, r, k.DepthPinhole.y, k.DepthPinhole.w);
-            if (ex.y < 0f || ey.y < 0f || ex.x > k.DepthSize.x || ey.x > k.DepthSize.y)
+            float2 ex = SphereExtent(c.x, z, r, k.DepthFocal.x, k.DepthCentre.x);
+            float2 ey = SphereExtent(c.y, z, r, k.DepthFocal.y, k.DepthCentre.y);
+            if (ex.y < 0f || ey.y < 0f || ex.x > k.DepthWidth || ey.x > k.DepthHeight)
                 return new int4(1, 0, 0, 0);
             const int tile = FluidSurfaceLayout.TileSize;
             return new int4((int)math.floor(math.max(ex.x, 0f)) / tile, (int)math.floor(math.max(ey.x, 0f)) / tile,
-                (int)math.floor(math.min(ex.y, k.DepthSize.x - 1f)) / tile, (int)math.floor(math.min(ey.y, k.DepthSize.y - 1f)) / tile);
+                (int)math.floor(math.min(ex.y, k.DepthWidth - 1f)) / tile, (int)math.floor(math.min(ey.y, k.DepthHeight - 1f)) / tile);
         }
 
         /// <summary>Tile entries the particles need (the scan's total).</summary>
         public static int TileEntries(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles)
         {
             int total = 0;
-            for (int i = 0; i < k.ParticleCount; i++)
+            for (int i = 0; i < (int)k.ParticleCount; i++)
             {
                 int4 t = TileRect(k, particles[i].xyz);
                 if (t.x <= t.z)
@@ -91,7 +91,7 @@ namespace SoftBodyDynamics.Solvers
         public static void SplatDepth(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float> depth, Span<int4> rects, Span<float4> centres,
             Span<int> covering)
         {
-            int n = k.ParticleCount, w = k.DepthSize.x, h = k.DepthSize.y;
+            int n = (int)k.ParticleCount, w = (int)k.DepthWidth, h = (int)k.DepthHeight;
             const int tile = FluidSurfaceLayout.TileSize;
             for (int i = 0; i < n; i++)
             {
@@ -105,11 +105,11 @@ namespace SoftBodyDynamics.Solvers
                     for (int y = ty * tile; y < math.min(h, (ty + 1) * tile); y++)
                         for (int x = tx * tile; x < math.min(w, (tx + 1) * tile); x++)
                         {
-                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole);
+                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.DepthFocal, k.DepthCentre);
                             float near = Huge;
                             for (int c = 0; c < count; c++)
                             {
-                                float2 hit = RaySphere(ray, centres[covering[c]].xyz, k.Splat.y);
+                                float2 hit = RaySphere(ray, centres[covering[c]].xyz, k.ParticleRadiusSquared);
                                 if (hit.y > 0f)
                                     near = math.min(near, hit.x);
                             }
@@ -128,7 +128,7 @@ namespace SoftBodyDynamics.Solvers
             return count;
         }
 
-        /// <summary>SplatThickness: summed chords (m, in integer quanta of Splat.w) and their mean attribute (0–1) per thickness pixel.</summary>
+        /// <summary>SplatThickness: summed chords (m, in integer quanta of ThicknessQuantum) and their mean attribute (0–1) per thickness pixel.</summary>
         public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness) =>
             SplatThickness(k, particles, thickness, new int4[k.ParticleCount], new float4[k.ParticleCount], new int[k.ParticleCount]);
 
@@ -136,14 +136,14 @@ namespace SoftBodyDynamics.Solvers
         public static void SplatThickness(in FluidSurfaceConstants k, ReadOnlySpan<float4> particles, Span<float2> thickness, Span<int4> rects, Span<float4> spheres,
             Span<int> covering)
         {
-            int n = k.ParticleCount, w = k.OtherSizes.x, h = k.OtherSizes.y;
-            int perTile = FluidSurfaceLayout.TileGroup * k.SurfaceCounts.z;
+            int n = (int)k.ParticleCount, w = (int)k.ThicknessWidth, h = (int)k.ThicknessHeight;
+            int perTile = FluidSurfaceLayout.TileGroup * (int)k.ThicknessPixelsPerThread;
             for (int i = 0; i < n; i++)
             {
                 rects[i] = TileRect(k, particles[i].xyz);
-                spheres[i] = new float4(ToView(k, particles[i].xyz), math.saturate((particles[i].w - k.AttributeRange.x) * k.AttributeRange.y));
+                spheres[i] = new float4(ToView(k, particles[i].xyz), math.saturate((particles[i].w - k.ColdAttribute) * k.InverseAttributeSpan));
             }
-            float inverseQuantum = 1f / k.Splat.w;
+            float inverseQuantum = 1f / k.ThicknessQuantum;
             for (int ty = 0; ty * perTile < h; ty++)
                 for (int tx = 0; tx * perTile < w; tx++)
                 {
@@ -151,24 +151,24 @@ namespace SoftBodyDynamics.Solvers
                     for (int y = ty * perTile; y < math.min(h, (ty + 1) * perTile); y++)
                         for (int x = tx * perTile; x < math.min(w, (tx + 1) * perTile); x++)
                         {
-                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.ThicknessPinhole);
+                            float3 ray = PixelRay(x + 0.5f, y + 0.5f, k.ThicknessFocal, k.ThicknessCentre);
                             uint sum = 0, attributes = 0;
                             for (int c = 0; c < count; c++)
                             {
                                 float4 sphere = spheres[covering[c]];
-                                float2 hit = RaySphere(ray, sphere.xyz, k.Splat.y);
+                                float2 hit = RaySphere(ray, sphere.xyz, k.ParticleRadiusSquared);
                                 sum += (uint)math.round(hit.y * inverseQuantum);
                                 attributes += (uint)math.round(hit.y * sphere.w * inverseQuantum);
                             }
-                            thickness[y * w + x] = new float2(sum * k.Splat.w, sum > 0 ? attributes / (float)sum : 0f);
+                            thickness[y * w + x] = new float2(sum * k.ThicknessQuantum, sum > 0 ? attributes / (float)sum : 0f);
                         }
                 }
         }
 
-        static bool InDepth(in FluidSurfaceConstants k, int x, int y) => x >= 0 && y >= 0 && x < k.DepthSize.x && y < k.DepthSize.y;
+        static bool InDepth(in FluidSurfaceConstants k, int x, int y) => x >= 0 && y >= 0 && x < k.DepthWidth && y < k.DepthHeight;
 
         static float At(in FluidSurfaceConstants k, ReadOnlySpan<float> depth, int x, int y) =>
-            InDepth(k, x, y) ? depth[y * k.DepthSize.x + x] : 0f;
+            InDepth(k, x, y) ? depth[y * (int)k.DepthWidth + x] : 0f;
 
         /// <summary>
         /// One separable pass along (ax, ay): narrow-range (Truong &amp; Yuksel 2018, §4: samples more than μ behind are
@@ -177,8 +177,8 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static void Separable(in FluidSurfaceConstants k, ReadOnlySpan<float> input, Span<float> output, int ax, int ay, bool narrow)
         {
-            int w = k.DepthSize.x;
-            for (int y = 0; y < k.DepthSize.y; y++)
+            int w = (int)k.DepthWidth;
+            for (int y = 0; y < (int)k.DepthHeight; y++)
                 for (int x = 0; x < w; x++)
                 {
                     float z0 = input[y * w + x];
@@ -187,10 +187,10 @@ namespace SoftBodyDynamics.Solvers
                         output[y * w + x] = 0f;
                         continue;
                     }
-                    float radius = math.min(k.Filter.x * k.DepthPinhole.x / z0, k.Filter.y);
+                    float radius = math.min(k.FilterRadius * k.DepthFocal.x / z0, k.MaxFilterPixels);
                     int n = (int)math.ceil(radius);
                     float inverseSigma2 = 4f / math.max(radius * radius, 1e-6f);
-                    float mu = k.Filter.z;
+                    float mu = k.DepthRange;
                     float sum = 0f, weights = 0f;
                     for (int i = -n; i <= n; i++)
                     {
@@ -227,9 +227,9 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static void CurvatureFlow(in FluidSurfaceConstants k, ReadOnlySpan<float> input, Span<float> output)
         {
-            int w = k.DepthSize.x;
-            float mu = k.Filter.z;
-            for (int y = 0; y < k.DepthSize.y; y++)
+            int w = (int)k.DepthWidth;
+            float mu = k.DepthRange;
+            for (int y = 0; y < (int)k.DepthHeight; y++)
                 for (int x = 0; x < w; x++)
                 {
                     float z = input[y * w + x];
@@ -244,7 +244,7 @@ namespace SoftBodyDynamics.Solvers
                     float zul = At(k, input, x - 1, y + 1), zur = At(k, input, x + 1, y + 1);
                     float zdl = At(k, input, x - 1, y - 1), zdr = At(k, input, x + 1, y - 1);
                     bool corners = zul > 0f && zur > 0f && zdl > 0f && zdr > 0f;
-                    float c = 1f / k.DepthPinhole.x;
+                    float c = 1f / k.DepthFocal.x;
                     float c2 = c * c;
                     float zx = 0.5f * (zr - zl), zy = 0.5f * (zu - zd);
                     float zxx = zr - 2f * z + zl, zyy = zu - 2f * z + zd;
@@ -255,7 +255,7 @@ namespace SoftBodyDynamics.Solvers
                     float ex = 0.5f * zx * dDx - zxx * d;
                     float ey = 0.5f * zy * dDy - zyy * d;
                     float h = c * (ex + ey) / (2f * d * math.sqrt(d));
-                    output[y * w + x] = z - 2f * k.Filter.w * c * z * h;
+                    output[y * w + x] = z - 2f * k.CurvatureStep * c * z * h;
                 }
         }
 
@@ -300,19 +300,19 @@ namespace SoftBodyDynamics.Solvers
             return math.normalize(n);
         }
 
-        static float3 ViewPositionAt(in FluidSurfaceConstants k, int x, int y, float z) => PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole) * z;
+        static float3 ViewPositionAt(in FluidSurfaceConstants k, int x, int y, float z) => PixelRay(x + 0.5f, y + 0.5f, k.DepthFocal, k.DepthCentre) * z;
 
         static float3 Tangent(in FluidSurfaceConstants k, ReadOnlySpan<float> depth, int x, int y, int ax, int ay, float z, float3 v)
         {
             float zf = At(k, depth, x + ax, y + ay), zb = At(k, depth, x - ax, y - ay);
-            float mu = k.Filter.z;
+            float mu = k.DepthRange;
             bool useF = zf > 0f && math.abs(zf - z) <= mu;
             bool useB = zb > 0f && math.abs(zb - z) <= mu;
             if (useF && (!useB || math.abs(zf - z) <= math.abs(zb - z)))
                 return ViewPositionAt(k, x + ax, y + ay, zf) - v;
             if (useB)
                 return v - ViewPositionAt(k, x - ax, y - ay, zb);
-            return new float3(ax, ay, 0f) * (z / k.DepthPinhole.x);
+            return new float3(ax, ay, 0f) * (z / k.DepthFocal.x);
         }
 
         /// <summary>
@@ -321,8 +321,8 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static void Normals(in FluidSurfaceConstants k, ReadOnlySpan<float> depth, Span<uint> normals)
         {
-            int w = k.DepthSize.x;
-            for (int y = 0; y < k.DepthSize.y; y++)
+            int w = (int)k.DepthWidth;
+            for (int y = 0; y < (int)k.DepthHeight; y++)
                 for (int x = 0; x < w; x++)
                 {
                     float z = depth[y * w + x];

@@ -174,9 +174,7 @@ namespace SoftBodyDynamics.Tests.Solvers
 
             public int Count(FluidSurfaceKernel k) => m_Counts == null ? 0 : m_Counts[(int)k];
 
-            public void SetVector(int global, float4 value) { }
-
-            public void SetInts(int global, int4 value) { }
+            public void SetConstants(in FluidSurfaceConstants constants) { }
 
             public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer) { }
 

@@ -36,7 +36,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 float4 pin = cam.Pinhole(divisor);
                 var p = new float3(0.3f, -0.2f, -1.7f);
                 float px = pin.z + pin.x * p.x / -p.z, py = pin.w + pin.y * p.y / -p.z;
-                float3 ray = FluidSurfacePasses.PixelRay(px, py, pin) * -p.z;
+                float3 ray = FluidSurfacePasses.PixelRay(px, py, new float2(pin.x, pin.y), new float2(pin.z, pin.w)) * -p.z;
                 Assert.That(math.length(ray - p), Is.LessThan(1e-5f));
             }
             // 60° vertical field: f = 30 / tan 30°.
@@ -60,7 +60,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 for (int y = 0; y < cam.Height; y++)
                     for (int x = 0; x < cam.Width; x++)
                     {
-                        if (FluidSurfacePasses.RaySphere(FluidSurfacePasses.PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole), c, s.ParticleRadius * s.ParticleRadius).y <= 0f)
+                        if (FluidSurfacePasses.RaySphere(FluidSurfacePasses.PixelRay(x + 0.5f, y + 0.5f, k.DepthFocal, k.DepthCentre), c, s.ParticleRadius * s.ParticleRadius).y <= 0f)
                             continue;
                         int tx = x / FluidSurfaceLayout.TileSize, ty = y / FluidSurfaceLayout.TileSize;
                         Assert.That(tx >= rect.x && tx <= rect.z && ty >= rect.y && ty <= rect.w, $"pixel ({x}, {y}) of a sphere at {world} is outside its tiles {rect}");
@@ -157,7 +157,7 @@ namespace SoftBodyDynamics.Tests.Solvers
             for (int y = 0; y < 30; y++)
                 for (int x = 0; x < 40; x++)
                 {
-                    float3 ray = FluidSurfacePasses.PixelRay(x + 0.5f, y + 0.5f, k.DepthPinhole);
+                    float3 ray = FluidSurfacePasses.PixelRay(x + 0.5f, y + 0.5f, k.DepthFocal, k.DepthCentre);
                     depth[y * 40 + x] = 1.5f / (1f + 0.3f * ray.x);
                 }
             var packed = new uint[depth.Length];
@@ -196,9 +196,7 @@ namespace SoftBodyDynamics.Tests.Solvers
 
             public int Count(FluidSurfaceKernel k) => m_Counts == null ? 0 : m_Counts[(int)k];
 
-            public void SetVector(int global, float4 value) { }
-
-            public void SetInts(int global, int4 value) { }
+            public void SetConstants(in FluidSurfaceConstants constants) { }
 
             public void BindDepth(FluidSurfaceKernel kernel, FluidSurfaceDepthSlot slot, FluidSurfaceBuffer buffer)
             {

@@ -12,8 +12,8 @@ namespace SoftBodyDynamics.Tests.Compute
     /// <summary>
     /// Each kernel family's constant buffer is declared twice, in HLSL and in C#: both declare the same fields, of the same
     /// types, in the same order, at the same byte offsets, and are the same size (a multiple of 16 bytes); every 3- or
-    /// 4-vector starts a 16-byte row; and glslang's reflection of every kernel that reads the buffer places the members
-    /// where the C# struct has them.
+    /// 4-vector starts a 16-byte row and every 2-vector an 8-byte boundary; and glslang's reflection of every kernel that
+    /// reads the buffer places the members where the C# struct has them.
     /// </summary>
     public class ComputeConstantsLayoutTests
     {
@@ -28,12 +28,20 @@ namespace SoftBodyDynamics.Tests.Compute
             AssertSameLayout<SoftBodyComputeConstants>("SoftBodyComputeConstants.hlsl", SoftBodyComputeConstants.BufferName, SoftBodyComputeConstants.Bytes);
 
         [Test]
+        public void SurfaceConstants_HlslAndCSharpAgree() =>
+            AssertSameLayout<FluidSurfaceConstants>("FluidSurfaceConstants.hlsl", FluidSurfaceConstants.BufferName, FluidSurfaceConstants.Bytes);
+
+        [Test]
         public void FluidConstants_ReflectedOffsetsAreTheCSharpOnes() =>
             AssertReflectionMatches<FluidComputeConstants>(LavapipeFluidSolver.ComputePath(), FluidComputeConstants.BufferName, FluidComputeConstants.Bytes);
 
         [Test]
         public void SoftBodyConstants_ReflectedOffsetsAreTheCSharpOnes() =>
             AssertReflectionMatches<SoftBodyComputeConstants>(LavapipeSoftBodyCommands.ComputePath(), SoftBodyComputeConstants.BufferName, SoftBodyComputeConstants.Bytes);
+
+        [Test]
+        public void SurfaceConstants_ReflectedOffsetsAreTheCSharpOnes() =>
+            AssertReflectionMatches<FluidSurfaceConstants>(LavapipeFluidSurface.ComputePath(), FluidSurfaceConstants.BufferName, FluidSurfaceConstants.Bytes);
 
         static void AssertSameLayout<T>(string header, string bufferName, int bytes) where T : struct
         {
@@ -45,8 +53,12 @@ namespace SoftBodyDynamics.Tests.Compute
             Assert.That(bytes, Is.EqualTo(hlsl.Size), $"{typeof(T).Name}.Bytes");
             Assert.That(bytes % 16, Is.Zero, "a constant buffer's size is a multiple of 16 bytes");
             foreach (var (name, type, offset) in hlsl.Members)
+            {
                 if (type.EndsWith("3") || type.EndsWith("4"))
                     Assert.That(offset % 16, Is.Zero, $"{name}: a 3- or 4-vector starts a 16-byte row (std140 then gives the same offsets)");
+                if (type.EndsWith("2"))
+                    Assert.That(offset % 8, Is.Zero, $"{name}: a 2-vector starts on 8 bytes (std140 then gives the same offset)");
+            }
         }
 
         static void AssertReflectionMatches<T>(string computePath, string bufferName, int bytes) where T : struct

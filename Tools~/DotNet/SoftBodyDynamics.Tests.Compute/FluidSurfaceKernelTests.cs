@@ -47,12 +47,15 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         [Test]
-        public void SurfaceGlobals_AreTheConstantsTheCpuComputes()
+        public void SurfaceKernels_ReadTheirConstantsFromTheConstantBufferOnly()
         {
             LavapipeComputeShader shader = Lavapipe.Surface.Shader;
-            var used = Enumerable.Range(0, shader.KernelCount).SelectMany(k => shader.Compiled(k).GlobalOffsets.Keys).Distinct().OrderBy(n => n).ToArray();
-            var declared = FluidSurfaceConstants.Names.OrderBy(n => n).ToArray();
-            Assert.That(used, Is.EqualTo(declared));
+            for (int k = 0; k < shader.KernelCount; k++)
+            {
+                CompiledKernel kernel = shader.Compiled(k);
+                Assert.That(kernel.GlobalOffsets.Keys, Is.Empty, $"{kernel.Name}: loose globals");
+                Assert.That(kernel.ConstantBlocks.Keys, Is.EquivalentTo(new[] { FluidSurfaceConstants.BufferName }), $"{kernel.Name}: constant buffers");
+            }
         }
 
         [Test]
@@ -104,7 +107,7 @@ namespace SoftBodyDynamics.Tests.Compute
                     if (g || e) covered++;
                     if (g != e || g != cpu[i] > 0f) { mismatched++; continue; }
                     if (!g) continue;
-                    double h = FluidSurfaceReference.PixelHits(scene, f.Constants.DepthPinhole, x, y).NearestHalfChord;
+                    double h = FluidSurfaceReference.PixelHits(scene, scene.Camera.Pinhole(s.DepthDivisor), x, y).NearestHalfChord;
                     double bound = HitTolerance(exact.Depth[i], scene.Radius, h);
                     double d = Math.Max(Math.Abs(f.RawDepth[i] - exact.Depth[i]), Math.Abs(f.RawDepth[i] - cpu[i]) / 2);
                     worst = Math.Max(worst, d / bound);
@@ -126,13 +129,13 @@ namespace SoftBodyDynamics.Tests.Compute
             double[] exact = FluidSurfaceReference.Thickness(scene, FluidSurfaceSettings.ThicknessDivisor);
             var cpu = new float2[f.Thickness.Length];
             FluidSurfacePasses.SplatThickness(f.Constants, scene.Particles, cpu);
-            double quantum = f.Constants.Splat.w;
+            double quantum = f.Constants.ThicknessQuantum;
             int covered = 0;
             for (int y = 0; y < f.Targets.Thickness.y; y++)
                 for (int x = 0; x < f.Targets.Thickness.x; x++)
                 {
                     int i = y * f.Targets.Thickness.x + x;
-                    int hits = FluidSurfaceReference.PixelHits(scene, f.Constants.ThicknessPinhole, x, y).Hits;
+                    int hits = FluidSurfaceReference.PixelHits(scene, scene.Camera.Pinhole(FluidSurfaceSettings.ThicknessDivisor), x, y).Hits;
                     if (hits > 0) covered++;
                     // Per chord: half a quantum of rounding, and at most 4√ε·r of float32 error (2·min(h, 4ε r²/h)).
                     double bound = hits * (quantum / 2 + 4 * Math.Sqrt(Epsilon) * scene.Radius) + 1e-9;

@@ -18,9 +18,6 @@ namespace UnityEngine
         // https://docs.unity3d.com/ScriptReference/ComputeShader.SetTexture.html
         public void SetTexture(int kernelIndex, int nameID, Texture texture) => throw null;
 
-        // https://docs.unity3d.com/ScriptReference/ComputeShader.SetVector.html
-        public void SetVector(int nameID, Vector4 val) => throw null;
-
         // https://docs.unity3d.com/ScriptReference/ComputeShader.SetInts.html
         public void SetInts(int nameID, params int[] values) => throw null;
 

@@ -1,5 +1,7 @@
 // Source: Unity-Technologies/Graphics, Packages/com.unity.render-pipelines.core/Runtime/CommandBuffers/ComputeCommandBuffer.cs
 // and RasterCommandBuffer.cs (generated wrappers over UnityEngine.Rendering.CommandBuffer, public since SRP Core 16).
+using Unity.Collections;
+
 namespace UnityEngine.Rendering
 {
     // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.BaseCommandBuffer.html
@@ -21,11 +23,13 @@ namespace UnityEngine.Rendering
     {
         internal ComputeCommandBuffer() => throw null;
 
-        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeVectorParam_UnityEngine_ComputeShader_System_Int32_UnityEngine_Vector4_
-        public void SetComputeVectorParam(ComputeShader computeShader, int nameID, Vector4 val) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetBufferData__1_UnityEngine_GraphicsBuffer_Unity_Collections_NativeArray___0__
+        // (wraps CommandBuffer.SetBufferData: https://docs.unity3d.com/ScriptReference/Rendering.CommandBuffer.SetBufferData.html)
+        public void SetBufferData<T>(GraphicsBuffer buffer, NativeArray<T> data) where T : struct => throw null;
 
-        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeIntParams_UnityEngine_ComputeShader_System_Int32_System_Int32___
-        public void SetComputeIntParams(ComputeShader computeShader, int nameID, params int[] values) => throw null;
+        // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeConstantBufferParam_UnityEngine_ComputeShader_System_Int32_UnityEngine_GraphicsBuffer_System_Int32_System_Int32_
+        // (wraps https://docs.unity3d.com/ScriptReference/Rendering.CommandBuffer.SetComputeConstantBufferParam.html)
+        public void SetComputeConstantBufferParam(ComputeShader computeShader, int nameID, GraphicsBuffer buffer, int offset, int size) => throw null;
 
         // https://docs.unity3d.com/Packages/com.unity.render-pipelines.core@17.0/api/UnityEngine.Rendering.ComputeCommandBuffer.html#UnityEngine_Rendering_ComputeCommandBuffer_SetComputeBufferParam_UnityEngine_ComputeShader_System_Int32_System_Int32_UnityEngine_GraphicsBuffer_
         public void SetComputeBufferParam(ComputeShader computeShader, int kernelIndex, int nameID, GraphicsBuffer buffer) => throw null;
