@@ -62,7 +62,6 @@ namespace SoftBodyDynamics.Compute
                     continue;
                 var target = id == FluidComputeBuffer.Args ? GraphicsBuffer.Target.Structured | GraphicsBuffer.Target.IndirectArguments : GraphicsBuffer.Target.Structured;
                 m_Buffers[b] = new GraphicsBuffer(target, length, FluidComputeLayout.Stride(id));
-                m_Kernels.Bind(b, m_Buffers[b]); // only a (re)created buffer: SetShapes runs every frame
                 if (old != null && FluidComputeLayout.HoldsState(id))
                 {
                     kept[b] = old;
@@ -75,6 +74,7 @@ namespace SoftBodyDynamics.Compute
             if (!copy)
                 return;
             // The live particles into the grown buffers: PermuteCopyBack with the old buffers bound as its Out partners.
+            BindBuffers();
             int kernel = (int)FluidKernel.PermuteCopyBack;
             for (int b = 0; b < kept.Length; b++)
                 if (kept[b] != null)
@@ -207,6 +207,12 @@ namespace SoftBodyDynamics.Compute
 
         public void SetConstants(in FluidComputeConstants constants) => m_ConstantBuffer.Set(constants);
         public void SetInts(FluidComputeGlobal name, int4 value) => m_Kernels.SetInts((int)name, value);
+        public void BindBuffers()
+        {
+            for (int b = 0; b < m_Buffers.Length; b++)
+                m_Kernels.Bind(b, m_Buffers[b]);
+        }
+
         public void Dispatch(FluidKernel kernel, int threads) => m_Kernels.Dispatch((int)kernel, threads);
         public void DispatchIndirect(FluidKernel kernel) => m_Kernels.DispatchIndirect((int)kernel, m_Buffers[(int)FluidComputeBuffer.Args]);
 

@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Lavapipe
         public int Count => (int)Stats[FluidComputeLayout.StatLive];
 
         /// <summary>
-        /// Creates or grows the buffers and binds them; the live particles move into grown state buffers on the GPU, the
+        /// Creates or grows the buffers (bound by <see cref="BindBuffers"/> at each recording); the live particles move into grown state buffers on the GPU, the
         /// way FluidComputeSolver does it (PermuteCopyBack with the old buffers bound as its Out partners).
         /// </summary>
         void Allocate(int capacity, int cells)
@@ -82,22 +82,16 @@ namespace SoftBodyDynamics.Lavapipe
                     old.Dispose();
                 }
                 m_Buffers[b] = created;
-                // Only a (re)created buffer is bound again: SetShapes runs every frame and must not rebind everything.
-                for (int k = 0; k < m_Kernels.Length; k++)
-                    m_Shader.SetBuffer(m_Kernels[k], "_" + id, created);
             }
             m_Capacity = capacity;
             m_Cells = cells;
             int copyBack = m_Kernels[(int)FluidKernel.PermuteCopyBack];
-            bool copy = false;
+            if (Array.TrueForAll(kept, k => k == null))
+                return;
+            BindBuffers();
             for (int b = 0; b < kept.Length; b++)
                 if (kept[b] != null)
-                {
                     m_Shader.SetBuffer(copyBack, "_" + FluidComputeLayout.OutPartner((FluidComputeBuffer)b), kept[b]);
-                    copy = true;
-                }
-            if (!copy)
-                return;
             m_Shader.DispatchIndirect(copyBack, Buffer(FluidComputeBuffer.Args), 0);
             Flush();
             for (int b = 0; b < kept.Length; b++)
@@ -225,6 +219,13 @@ namespace SoftBodyDynamics.Lavapipe
 
         /// <summary>Runs what was recorded.</summary>
         public double Flush() => m_Shader.Submit();
+
+        public void BindBuffers()
+        {
+            for (int b = 0; b < m_Buffers.Length; b++)
+                for (int k = 0; k < m_Kernels.Length; k++)
+                    m_Shader.SetBuffer(m_Kernels[k], "_" + (FluidComputeBuffer)b, m_Buffers[b]);
+        }
 
         public void SetConstants(in FluidComputeConstants constants) => m_Shader.SetConstantBuffer(FluidComputeConstants.BufferName, constants);
         public void SetInts(FluidComputeGlobal name, int4 value) => m_Shader.SetInts(m_GlobalNames[(int)name], value);

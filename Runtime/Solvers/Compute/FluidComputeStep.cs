@@ -14,6 +14,7 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Zeroes the step's counters, ages the particles by dt and finds the fastest speed (read back for the substeps).</summary>
         public static void RecordBegin<T>(ref T commands, in FluidComputeConstants constants) where T : IFluidComputeCommands
         {
+            commands.BindBuffers();
             commands.SetConstants(constants);
             commands.Dispatch(FluidKernel.ClearStats, FluidComputeLayout.StatCount);
             commands.DispatchIndirect(FluidKernel.BeginStep);
@@ -27,6 +28,7 @@ namespace SoftBodyDynamics.Solvers
         {
             if (spawnCount <= 0)
                 return;
+            commands.BindBuffers();
             commands.SetInts(FluidComputeGlobal.Counts, new int4(capacity, spawnCount, 0, 0));
             commands.Dispatch(FluidKernel.Emit, spawnCount);
             commands.Dispatch(FluidKernel.CommitEmit, 1);
@@ -39,6 +41,7 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public static void RecordPackRender<T>(ref T commands, int capacity) where T : IFluidComputeCommands
         {
+            commands.BindBuffers();
             commands.SetInts(FluidComputeGlobal.Counts, new int4(capacity, 0, 0, 0));
             commands.Dispatch(FluidKernel.PackRender, capacity);
         }
@@ -51,6 +54,7 @@ namespace SoftBodyDynamics.Solvers
         {
             if (constants.DrainCount == 0)
                 return;
+            commands.BindBuffers();
             commands.SetConstants(constants);
             commands.DispatchIndirect(FluidKernel.Drain);
         }

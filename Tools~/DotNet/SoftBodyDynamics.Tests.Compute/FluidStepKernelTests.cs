@@ -116,22 +116,46 @@ namespace SoftBodyDynamics.Tests.Compute
             return s;
         }
 
-        [Test]
-        public void PoiseuilleChannel_FlowsLikeTheCpu()
+        /// <summary>The periodic channel with no-slip faces at W/<paramref name="layers"/> (honey, c₀ = 1 m/s), at rest.</summary>
+        static FluidBuffers Channel(int layers, out FluidConstants c)
         {
-            // The periodic channel with its no-slip faces at W/5 (320 particles, honey, c₀ = 1 m/s) for 1 s: a laminar flow
-            // whose viscous solve contracts differences instead of growing them, so the GPU's per-pass round-off (≤ 1.4e-6 of a
-            // field) stays far below a thousandth of u_max in every layer's mean speed, while the flow itself is 3 % from
-            // the analytic profile and the periodic faces and no-slip walls, if missing, would change it by tens of per cent.
-            const int layers = 5, frames = 60;
             FluidParameters p = FluidParameters.Default;
             p.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
             p = PoiseuilleScenario.Channel(p, layers);
-            var c = new FluidConstants(p);
-            FluidBuffers cpu = new FluidBuffers(PoiseuilleScenario.PeriodicLayers * PoiseuilleScenario.PeriodicLayers * layers, c.Grid);
-            FluidScene.FillBlock(cpu, p.DomainMin, p.DomainMax, p.ParticleSpacing);
-            FluidBuffers start = new FluidBuffers(cpu.Capacity, c.Grid);
-            FluidScene.FillBlock(start, p.DomainMin, p.DomainMax, p.ParticleSpacing);
+            c = new FluidConstants(p);
+            var b = new FluidBuffers(PoiseuilleScenario.PeriodicLayers * PoiseuilleScenario.PeriodicLayers * layers, c.Grid);
+            FluidScene.FillBlock(b, p.DomainMin, p.DomainMax, p.ParticleSpacing);
+            return b;
+        }
+
+        /// <summary>
+        /// Every layer's mean speed of the GPU run against the CPU run's. The channel is laminar: its viscous solve contracts
+        /// differences instead of growing them, so the GPU's per-pass round-off (≤ 1.4e-6 of a field) stays far below a
+        /// thousandth of u_max in every layer, while the flow itself is 3 % from the analytic profile and the periodic faces
+        /// and no-slip walls, if missing, would change it by tens of per cent.
+        /// </summary>
+        static void AssertFlowsLikeTheCpu(FluidBuffers cpu, LavapipeFluidSolver g, in FluidConstants c, int layers, string what)
+        {
+            FluidBuffers gpu = GpuState.Download(g, c, cpu.Capacity, c.Grid.CellCount);
+            Assert.AreEqual(cpu.Status.Count, gpu.Status.Count, what);
+            var (u, _) = PoiseuilleScenario.MeanProfile(cpu, layers);
+            var (v, _) = PoiseuilleScenario.MeanProfile(gpu, layers);
+            for (int k = 0; k < layers; k++)
+            {
+                // Half the analytic mean speed at the layer's centre, 4·u_max·s(1 − s): a flow has started.
+                double s = (k + 0.5) / layers;
+                Assert.That(u[k], Is.GreaterThan(0.5 * 4 * s * (1 - s) * PoiseuilleScenario.PeakSpeed), $"{what}: layer {k} flows");
+                Assert.AreEqual(u[k], v[k], 1e-3 * PoiseuilleScenario.PeakSpeed, $"{what}: layer {k}");
+            }
+        }
+
+        [Test]
+        public void PoiseuilleChannel_FlowsLikeTheCpu()
+        {
+            // W/5: 320 particles, 1 s.
+            const int layers = 5, frames = 60;
+            FluidBuffers cpu = Channel(layers, out FluidConstants c);
+            FluidBuffers start = Channel(layers, out _);
             using var g = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, c, cpu.Capacity);
             g.Upload(start.Particles, start.Status.Count);
             for (int f = 0; f < frames; f++)
@@ -139,14 +163,43 @@ namespace SoftBodyDynamics.Tests.Compute
                 FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, cpu.Particles, cpu.Scratch, ref cpu.Status);
                 g.Step(1f / 60f, ref start.Status);
             }
-            FluidBuffers gpu = GpuState.Download(g, c, cpu.Capacity, c.Grid.CellCount);
-            Assert.AreEqual(cpu.Status.Count, gpu.Status.Count);
-            var (u, _) = PoiseuilleScenario.MeanProfile(cpu, layers);
-            var (v, _) = PoiseuilleScenario.MeanProfile(gpu, layers);
-            for (int k = 0; k < layers; k++)
+            AssertFlowsLikeTheCpu(cpu, g, c, layers, "W/5");
+        }
+
+        [Test]
+        public void TwoFluidsOnOneShader_StepAlternately_EachLikeItsCpuTwin()
+        {
+            // Bindings live on the shader, as on a Unity ComputeShader asset: two fluids of different sizes share one and
+            // step in turn; each must bind its own buffers, or its kernels run on the other fluid's particles.
+            const int frames = 60;
+            int[] layers = { 5, 10 };
+            var cpu = new FluidBuffers[2];
+            var constants = new FluidConstants[2];
+            var gpu = new LavapipeFluidSolver[2];
+            var status = new FluidStatus[2];
+            try
             {
-                Assert.That(u[k], Is.GreaterThan(0.3 * PoiseuilleScenario.PeakSpeed), $"layer {k} flows");
-                Assert.AreEqual(u[k], v[k], 1e-3 * PoiseuilleScenario.PeakSpeed, $"layer {k}");
+                for (int i = 0; i < 2; i++)
+                {
+                    cpu[i] = Channel(layers[i], out constants[i]);
+                    FluidBuffers start = Channel(layers[i], out _);
+                    gpu[i] = new LavapipeFluidSolver(Lavapipe.Device, Lavapipe.FluidShader, constants[i], cpu[i].Capacity);
+                    gpu[i].Upload(start.Particles, start.Status.Count);
+                    status[i] = start.Status;
+                }
+                for (int f = 0; f < frames; f++)
+                    for (int i = 0; i < 2; i++)
+                    {
+                        FluidSolver.Step(constants[i], ReadOnlySpan<ColliderShape>.Empty, 1f / 60f, cpu[i].Particles, cpu[i].Scratch, ref cpu[i].Status);
+                        gpu[i].Step(1f / 60f, ref status[i]);
+                    }
+                for (int i = 0; i < 2; i++)
+                    AssertFlowsLikeTheCpu(cpu[i], gpu[i], constants[i], layers[i], $"W/{layers[i]}");
+            }
+            finally
+            {
+                foreach (LavapipeFluidSolver g in gpu)
+                    g?.Dispose();
             }
         }
 
