@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
 using UnityEngine;
 using UnityEngine.Rendering.Universal;
 
@@ -8,7 +9,8 @@ namespace SoftBodyDynamics.Rendering
     /// URP renderer feature that draws the fluids of every world's <see cref="FluidRenderSources"/> as smooth screen-space
     /// surfaces (<see cref="FluidSurfacePass"/>). Add it to the URP renderer, assign a <see cref="FluidRendererSettings"/>
     /// asset with both shaders, and turn on Opaque Texture and Depth Texture (Opaque Downsampling None) in the URP asset.
-    /// Needs compute shaders and URP's render graph (Compatibility Mode is not supported). Preview and reflection
+    /// Needs compute shaders with 256-thread groups and 6 buffers per kernel (<see cref="FluidSurfaceDevice"/>) and URP's
+    /// render graph (Compatibility Mode is not supported). Preview and reflection
     /// cameras, and cameras that see no fluid, get no pass and cost nothing.
     /// </summary>
     public sealed class FluidRendererFeature : ScriptableRendererFeature
@@ -19,7 +21,7 @@ namespace SoftBodyDynamics.Rendering
         FluidSurfacePass m_Pass;
         readonly Plane[] m_Frustum = new Plane[FluidRenderVisibility.PlaneCount];
         readonly List<FluidRenderSource> m_Sources = new List<FluidRenderSource>();
-        bool m_LoggedNoCompute;
+        bool m_LoggedCannotDraw;
 
         public override void Create()
         {
@@ -31,9 +33,10 @@ namespace SoftBodyDynamics.Rendering
         {
             if (settings == null || settings.computeShader == null || settings.overlayShader == null)
                 return;
-            if (!SystemInfo.supportsComputeShaders)
+            if (!FluidSurfaceDevice.CanDraw(SystemInfo.supportsComputeShaders, SystemInfo.maxComputeWorkGroupSize,
+                    SystemInfo.maxComputeBufferInputsCompute, out string reason))
             {
-                FluidRendererLog.WarnOnce(ref m_LoggedNoCompute, "this device has no compute shaders; fluids are not drawn.");
+                FluidRendererLog.WarnOnce(ref m_LoggedCannotDraw, reason + "; fluids are not drawn.");
                 return;
             }
             if ((renderingData.cameraData.cameraType & (CameraType.Preview | CameraType.Reflection)) != 0)

@@ -13,6 +13,8 @@ namespace SoftBodyDynamics.Solvers
         public const int TileGroup = 8;
         /// <summary>Threads of the one-group tile scan.</summary>
         public const int ScanGroup = 256;
+        /// <summary>Most storage buffers any surface kernel binds (checked against the kernels' reflection on lavapipe).</summary>
+        public const int MaxBuffersPerKernel = 6;
 
         public const int StatEntries = 0, StatDropped = 1, StatDrawn = 2, StatCount = 4;
 

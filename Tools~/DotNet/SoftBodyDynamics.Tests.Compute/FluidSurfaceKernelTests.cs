@@ -89,6 +89,16 @@ namespace SoftBodyDynamics.Tests.Compute
         }
 
         [Test]
+        public void SurfaceBuffers_PerKernelAreAtMostTheLayoutBound()
+        {
+            LavapipeComputeShader shader = Lavapipe.Surface.Shader;
+            int most = 0;
+            for (int k = 0; k < shader.KernelCount; k++)
+                most = Math.Max(most, shader.Compiled(k).Bindings.Count(b => !b.Uniform));
+            Assert.That(most, Is.EqualTo(FluidSurfaceLayout.MaxBuffersPerKernel), "FluidSurfaceDevice checks the device against this bound");
+        }
+
+        [Test]
         public void RawDepth_IsTheUnionOfSpheresToRoundOff([Values("sphere", "two-blobs", "dam-break")] string name)
         {
             FluidSurfaceScene scene = Get(name);
