@@ -71,10 +71,10 @@ namespace SoftBodyDynamics.Compute
                     old?.Release();
             }
             m_Capacity = capacity;
+            BindBuffers();
             if (!copy)
                 return;
             // The live particles into the grown buffers: PermuteCopyBack with the old buffers bound as its Out partners.
-            BindBuffers();
             int kernel = (int)FluidKernel.PermuteCopyBack;
             for (int b = 0; b < kept.Length; b++)
                 if (kept[b] != null)

@@ -59,7 +59,7 @@ namespace SoftBodyDynamics.Lavapipe
         public int Count => (int)Stats[FluidComputeLayout.StatLive];
 
         /// <summary>
-        /// Creates or grows the buffers (bound by <see cref="BindBuffers"/> at each recording); the live particles move into grown state buffers on the GPU, the
+        /// Creates or grows the buffers and binds them (and <see cref="BindBuffers"/> again at each recording); the live particles move into grown state buffers on the GPU, the
         /// way FluidComputeSolver does it (PermuteCopyBack with the old buffers bound as its Out partners).
         /// </summary>
         void Allocate(int capacity, int cells)
@@ -86,9 +86,9 @@ namespace SoftBodyDynamics.Lavapipe
             m_Capacity = capacity;
             m_Cells = cells;
             int copyBack = m_Kernels[(int)FluidKernel.PermuteCopyBack];
+            BindBuffers();
             if (Array.TrueForAll(kept, k => k == null))
                 return;
-            BindBuffers();
             for (int b = 0; b < kept.Length; b++)
                 if (kept[b] != null)
                     m_Shader.SetBuffer(copyBack, "_" + FluidComputeLayout.OutPartner((FluidComputeBuffer)b), kept[b]);
