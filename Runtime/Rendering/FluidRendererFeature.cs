@@ -10,8 +10,8 @@ namespace SoftBodyDynamics.Rendering
     /// surfaces (<see cref="FluidSurfacePass"/>). Add it to the URP renderer, assign a <see cref="FluidRendererSettings"/>
     /// asset with both shaders, and turn on Opaque Texture and Depth Texture (Opaque Downsampling None) in the URP asset.
     /// Needs compute shaders with 256-thread groups and 6 buffers per kernel (<see cref="FluidSurfaceDevice"/>) and URP's
-    /// render graph (Compatibility Mode is not supported). Preview and reflection
-    /// cameras, and cameras that see no fluid, get no pass and cost nothing.
+    /// render graph (Compatibility Mode is not supported). Cameras that see no fluid get no pass; preview and reflection
+    /// cameras record nothing (the pass reads the camera type from <c>UniversalCameraData</c> in the render graph).
     /// </summary>
     public sealed class FluidRendererFeature : ScriptableRendererFeature
     {
@@ -39,8 +39,6 @@ namespace SoftBodyDynamics.Rendering
                 FluidRendererLog.WarnOnce(ref m_LoggedCannotDraw, reason + "; fluids are not drawn.");
                 return;
             }
-            if ((renderingData.cameraData.cameraType & (CameraType.Preview | CameraType.Reflection)) != 0)
-                return;
             FluidRenderSources.CollectAll(m_Sources);
             if (!FluidRenderVisibility.AnyDrawn(renderingData.cameraData.camera, m_Frustum, m_Sources))
                 return;

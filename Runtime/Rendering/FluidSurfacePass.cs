@@ -76,6 +76,9 @@ namespace SoftBodyDynamics.Rendering
                 return;
             UniversalResourceData resources = frameData.Get<UniversalResourceData>();
             UniversalCameraData cameraData = frameData.Get<UniversalCameraData>();
+            // Preview and reflection cameras get no fluid; render graph passes read the camera from the frame data.
+            if ((cameraData.cameraType & (CameraType.Preview | CameraType.Reflection)) != 0)
+                return;
             TextureHandle sceneColor = resources.cameraOpaqueTexture, sceneDepth = resources.cameraDepthTexture;
             if (!sceneColor.IsValid() || !sceneDepth.IsValid())
             {
