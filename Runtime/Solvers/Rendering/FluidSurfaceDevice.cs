@@ -1,12 +1,13 @@
+using Unity.Mathematics;
+
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>Whether a device can run the surface kernels, and the reason when it cannot.</summary>
     public static class FluidSurfaceDevice
     {
-        /// <summary>Threads in the largest group a surface kernel uses (the tile scan's <see cref="FluidSurfaceLayout.ScanGroup"/>).</summary>
-        public const int LargestGroup = FluidSurfaceLayout.ScanGroup > FluidSurfaceLayout.TileGroup * FluidSurfaceLayout.TileGroup
-            ? (FluidSurfaceLayout.ScanGroup > FluidSurfaceLayout.ParticleGroup ? FluidSurfaceLayout.ScanGroup : FluidSurfaceLayout.ParticleGroup)
-            : FluidSurfaceLayout.TileGroup * FluidSurfaceLayout.TileGroup;
+        /// <summary>Threads in the largest group a surface kernel uses (today the tile scan's <see cref="FluidSurfaceLayout.ScanGroup"/>).</summary>
+        public static int LargestGroup => math.max(FluidSurfaceLayout.ScanGroup,
+            math.max(FluidSurfaceLayout.ParticleGroup, FluidSurfaceLayout.TileGroup * FluidSurfaceLayout.TileGroup));
 
         /// <summary>
         /// True when the device runs compute shaders, allows <see cref="LargestGroup"/> threads per group
