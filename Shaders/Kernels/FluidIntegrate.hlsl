@@ -67,26 +67,24 @@ void ViscosityBToA(uint3 id : SV_DispatchThreadID)
     _VectorsA[i] = ViscosityIteration(i, true);
 }
 
-// Flocking alignment (XSPH) as a rate: vᵢ += blend·(v̄ᵢ − vᵢ), into _VectorsA.
+// XSPH smoothing, symmetric (momentum-conserving): vᵢ += b·Σⱼ (2m/(ρᵢ + ρⱼ))·Wᵢⱼ·(vⱼ − vᵢ), into _VectorsA.
 [numthreads(FLUID_GROUP, 1, 1)]
 void Alignment(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x;
     if (i >= LiveCount()) return;
-    float3 xi = _Positions[i].xyz;
+    float3 xi = _Positions[i].xyz, vi = _Velocities[i].xyz;
+    float rhoi = _Densities[i];
     float3 sum = float3(0.0, 0.0, 0.0);
-    float weight = 0.0;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
     for (uint n = 0; n < count; n++)
     {
         uint j = _Neighbours[list + n];
         float3 r = PairOffset(xi, _Positions[j].xyz);
-        float w = Poly6(dot(r, r)) / _Densities[j];
-        sum += w * _Velocities[j].xyz;
-        weight += w;
+        float w = Poly6(dot(r, r)) / (rhoi + _Densities[j]);
+        sum += w * (_Velocities[j].xyz - vi);
     }
-    float3 vi = _Velocities[i].xyz;
-    _VectorsA[i] = float4(weight > 0.0 ? vi + AlignmentBlend * (sum / weight - vi) : vi, 0.0);
+    _VectorsA[i] = float4(vi + AlignmentBlend * 2.0 * ParticleMass * sum, 0.0);
 }
 
 // FluidPasses.Move: start position into _Previous, the speed bound (counted), x += h·v, the domain box.

@@ -143,7 +143,7 @@ namespace SoftBodyDynamics.Solvers
                 SurfaceTension = p.SurfaceTension,
                 // The same expressions as FluidPasses.ViscosityIteration and Alignment, so the GPU gets the CPU's bits.
                 ViscosityScale = h * p.Viscosity * 2f * c.Mass * k.ViscosityLaplacianCoefficient * c.ViscosityCorrection,
-                AlignmentBlend = 1f - math.exp(-p.AlignmentRate * h),
+                AlignmentBlend = 1f - math.exp(-p.VelocitySmoothingRate * h),
                 StepSeconds = dt,
                 BulkPressureScale = c.BulkPressureScale,
                 WeaklyCompressible = p.Solver == FluidSolverKind.WeaklyCompressible ? 1u : 0u,

@@ -76,7 +76,7 @@ namespace SoftBodyDynamics.Solvers
             return n;
         }
 
-        /// <summary>Implicit viscosity (Jacobi iterations ping-ponging through the two vector scratch arrays) and alignment.</summary>
+        /// <summary>Implicit viscosity (Jacobi iterations ping-ponging through the two vector scratch arrays) and XSPH smoothing.</summary>
         static int Smooth(in FluidParameters p, int iterations, Span<FluidPass> passes, int n)
         {
             if (iterations > 0)
@@ -86,7 +86,7 @@ namespace SoftBodyDynamics.Solvers
                     passes[n++] = (it & 1) == 0 ? FluidPass.ViscosityAToB : FluidPass.ViscosityBToA;
                 passes[n++] = (iterations & 1) == 1 ? FluidPass.CopyBToVelocities : FluidPass.CopyAToVelocities;
             }
-            if (p.AlignmentRate > 0f)
+            if (p.VelocitySmoothingRate > 0f)
             {
                 passes[n++] = FluidPass.Alignment;
                 passes[n++] = FluidPass.CopyAToVelocities;

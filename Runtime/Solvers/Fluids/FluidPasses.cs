@@ -433,29 +433,29 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Flocking alignment (XSPH, Monaghan 1989) as a rate: vᵢ relaxes toward v̄ᵢ = Σⱼ (m/ρⱼ)Wᵢⱼvⱼ / Σⱼ (m/ρⱼ)Wᵢⱼ by
-        /// the factor 1 − e^(−rate·h), so the same rate means the same smoothing per second at any substep.
+        /// XSPH smoothing (Monaghan 1989, eq. 4.3; the flocking rules' alignment) as a rate, in its symmetric form so that
+        /// momentum is conserved: vᵢ += b·Σⱼ (2m/(ρᵢ + ρⱼ))·Wᵢⱼ·(vⱼ − vᵢ), b = 1 − e^(−rate·h) with rate =
+        /// <see cref="FluidParameters.VelocitySmoothingRate"/>; inside the fluid Σⱼ (2m/(ρᵢ + ρⱼ))Wᵢⱼ ≈ 1, so vᵢ moves the
+        /// fraction b of the way to its neighbours' mean, the same smoothing per second at any substep.
         /// </summary>
         public static void Alignment(in FluidConstants c, FluidParticles p, FluidScratch s, Span<float3> destination, int start, int end, float h)
         {
             SphKernels k = c.Kernels;
-            float blend = 1f - math.exp(-c.Parameters.AlignmentRate * h);
+            float scale = (1f - math.exp(-c.Parameters.VelocitySmoothingRate * h)) * 2f * c.Mass;
             const int cap = FluidScratch.MaxNeighbours;
             for (int i = start; i < end; i++)
             {
-                float3 xi = p.Positions[i];
+                float3 xi = p.Positions[i], vi = p.Velocities[i];
+                float rhoi = s.Densities[i];
                 float3 sum = float3.zero;
-                float weight = 0f;
                 int count = s.NeighbourCounts[i];
                 for (int n = 0; n < count; n++)
                 {
                     int j = s.Neighbours[i * cap + n];
-                    float w = k.Poly6(math.lengthsq(c.Offset(xi, p.Positions[j]))) / s.Densities[j];
-                    sum += w * p.Velocities[j];
-                    weight += w;
+                    float w = k.Poly6(math.lengthsq(c.Offset(xi, p.Positions[j]))) / (rhoi + s.Densities[j]);
+                    sum += w * (p.Velocities[j] - vi);
                 }
-                float3 vi = p.Velocities[i];
-                destination[i] = weight > 0f ? vi + blend * (sum / weight - vi) : vi;
+                destination[i] = vi + scale * sum;
             }
         }
 

@@ -166,11 +166,11 @@ namespace SoftBodyDynamics.Tests.Solvers
         /// 0.12 × 0.8 × 0.12 m at Δx = 2 cm (40 layers, 1440 particles), position-based at 4 iterations, 3 s of 1/60 s
         /// frames: (highest kinetic energy per mass, the last one, highest particle, bulk density error).
         /// </summary>
-        static (double highest, double last, float top, double density) FortyLayerColumn(float alignmentRate)
+        static (double highest, double last, float top, double density) FortyLayerColumn(float xsphRate)
         {
             FluidParameters p = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.12f, 1.2f, 0.12f));
             p.Solver = FluidSolverKind.PositionBased;
-            p.AlignmentRate = alignmentRate;
+            p.XsphRate = xsphRate;
             Assert.That(p.PressureIterations, Is.EqualTo(FluidParameters.Default.PressureIterations));
             var c = new FluidConstants(p);
             FluidBuffers b = FluidTestScenes.Block(c, 1440, float3.zero, new float3(0.12f, 0.8f, 0.12f));
@@ -199,7 +199,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                     bulk++;
                 }
             density /= bulk;
-            TestContext.WriteLine($"alignment {alignmentRate}/s: highest kinetic energy {highest:E2} J/kg, after 3 s {kinetic:E2} J/kg, top {top:F3} m, bulk density error {density:P2}");
+            TestContext.WriteLine($"XSPH {xsphRate}/s: highest kinetic energy {highest:E2} J/kg, after 3 s {kinetic:E2} J/kg, top {top:F3} m, bulk density error {density:P2}");
             return (highest, kinetic, top, density);
         }
 
@@ -220,7 +220,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
-        public void PositionBasedDefaults_HoldAFortyLayerColumn()
+        public void PositionBasedDepthRule_HoldsAFortyLayerColumnWithoutSmoothing()
         {
             // One substep per frame lets gravity press the column by g·h² = 2.7 mm a substep while 4 Jacobi iterations lift
             // only the bottom layers: the column collapses and splashes to the lid (4–11 J/kg). The depth rule plans the
@@ -236,12 +236,12 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
-        public void PositionBasedColumnWithXsph_RestsWithin3Seconds()
+        public void PositionBasedDefaults_ComeToRestWithin3Seconds()
         {
             // The residual of 4 Jacobi iterations keeps the surface layers moving (it becomes a velocity of its size over h);
-            // XSPH smoothing at 10/s (Macklin & Müller 2013's eq. 17 as a rate) damps that relative motion, so the
-            // 40-layer column comes to rest to 1e-5 J/kg (0.4 mm/s RMS) within 3 s, and the density stays within 2 %.
-            var (_, last, _, density) = FortyLayerColumn(10f);
+            // the solver's default XSPH smoothing (Macklin & Müller 2013's eq. 17 as a rate) damps that relative motion, so
+            // the 40-layer column comes to rest to 1e-5 J/kg (0.4 mm/s RMS) within 3 s, and the density stays within 2 %.
+            var (_, last, _, density) = FortyLayerColumn(FluidParameters.Default.XsphRate);
             Assert.That(last, Is.LessThan(1e-5));
             Assert.That(density, Is.LessThan(0.02));
         }

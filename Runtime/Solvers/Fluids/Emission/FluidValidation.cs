@@ -34,8 +34,8 @@ namespace SoftBodyDynamics.Solvers
             }
             if (budget <= 0)
                 issues.Add(ValidationIssue.Error(FluidIssueCode.BudgetInvalid, -1, $"The particle budget must be positive (is {budget})."));
-            if (!NonNegative(p.Viscosity) || !NonNegative(p.CohesionWeight) || !NonNegative(p.SeparationWeight) || !NonNegative(p.AlignmentRate) || !NonNegative(p.SurfaceTension) || !NonNegative(p.ArtificialViscosity))
-                issues.Add(ValidationIssue.Error(FluidIssueCode.CoefficientInvalid, -1, "Viscosity, artificial viscosity, cohesion, separation, alignment and surface tension must be finite and not negative."));
+            if (!NonNegative(p.Viscosity) || !NonNegative(p.CohesionWeight) || !NonNegative(p.SeparationWeight) || !NonNegative(p.AlignmentRate) || !NonNegative(p.XsphRate) || !NonNegative(p.SurfaceTension) || !NonNegative(p.ArtificialViscosity))
+                issues.Add(ValidationIssue.Error(FluidIssueCode.CoefficientInvalid, -1, "Viscosity, artificial viscosity, cohesion, separation, alignment, XSPH rate and surface tension must be finite and not negative."));
             if (!Share(p.WallFriction) || !Share(p.WallNoSlip) || !Share(p.DomainFriction.x) || !Share(p.DomainFriction.y) || !Share(p.DomainFriction.z)
                 || !Share(p.DomainNoSlip.x) || !Share(p.DomainNoSlip.y) || !Share(p.DomainNoSlip.z))
                 issues.Add(ValidationIssue.Warning(FluidIssueCode.WallShareOutOfRange, -1,
