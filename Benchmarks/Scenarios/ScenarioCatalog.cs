@@ -21,6 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new SoftBodyMethodsThroughputSuite(),
             new FluidAccuracySuite(),
             new FluidPoiseuilleSuite(),
+            new FluidStandingWaveSuite(),
             new FluidThroughputSuite(),
             new EffectCostSuite(),
             new RendererEffectCostSuite(),

@@ -1,0 +1,251 @@
+using System;
+using System.Collections.Generic;
+using SoftBodyDynamics.Solvers;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Benchmarks.Scenarios
+{
+    /// <summary>
+    /// Standing gravity wave: water <see cref="Depth"/> deep in a tank <see cref="Length"/> long between free-slip walls
+    /// (x), periodic along z over <see cref="PeriodicLayers"/> spacings, started flat with the velocity of the first
+    /// sloshing mode of linear theory, φ = B·cosh(ky)·cos(kx)·cos(ωt), k = π/L, so the surface rises as
+    /// η = A·cos(kx)·sin(ωt) with amplitude <see cref="Amplitude"/>. Its analytic angular frequency is the dispersion
+    /// relation ω² = g·k·tanh(kd) (Lamb 1932, §228). The water's centre of mass along x moves as sin(ωt); Setup records it
+    /// every 1/60 s frame (at the time each frame simulated) for <see cref="Periods"/> analytic periods and fits e^(−γt)(a·sin ωt + b·cos ωt) + c
+    /// (<see cref="FitFrequency"/>). Error = |ω_fit/ω − 1|. Each timed Step is one more 1/60 s frame; an item is one
+    /// particle-substep.
+    /// </summary>
+    public sealed class StandingWaveScenario : IScenario
+    {
+        /// <summary>Tank length L between the walls (m): half the mode's wavelength.</summary>
+        public const float Length = 0.2f;
+        /// <summary>Still-water depth d (m).</summary>
+        public const float Depth = 0.1f;
+        /// <summary>Surface amplitude A (m): kA = 0.047, so the frequency's amplitude correction, of order (kA)², is about 0.2 %.</summary>
+        public const float Amplitude = 0.003f;
+        /// <summary>Analytic periods recorded.</summary>
+        public const int Periods = 3;
+        /// <summary>Periodic length along z in spacings: four kernel radii at h = 2Δx (at least 3h).</summary>
+        public const int PeriodicLayers = 8;
+        const float k_Gravity = 9.81f;
+        const float k_Frame = 1f / 60f;
+
+        readonly int m_Layers;
+        readonly FluidParameters m_Parameters;
+        readonly string m_Setting;
+        FluidConstants m_Constants;
+        FluidBuffers m_Buffers;
+        long m_Items;
+        int m_Initial, m_Capped;
+        double m_FrequencyError, m_Damping, m_FittedAmplitude, m_FitResidual;
+
+        /// <param name="layers">Particle layers over the depth (Δx = d / layers).</param>
+        /// <param name="parameters">The fluid; spacing, domain, gravity and periodic axes are set by the scene.</param>
+        /// <param name="setting">The row's label.</param>
+        public StandingWaveScenario(int layers, FluidParameters parameters, string setting)
+        {
+            m_Layers = layers;
+            m_Parameters = parameters;
+            m_Setting = setting;
+        }
+
+        public string Name => "StandingWave";
+        public string Method => $"{DamBreakScenario.SolverName(m_Parameters.Solver)} {m_Setting}, d/{m_Layers}";
+        public int Size => (int)math.round(Length / Depth * m_Layers) * m_Layers * PeriodicLayers;
+        public string SizeUnit => "particles";
+        public long ItemsPerStep => Math.Max(1, m_Items);
+
+        /// <summary>Wavenumber k = π/L of the first sloshing mode (1/m).</summary>
+        public static double Wavenumber => Math.PI / Length;
+
+        /// <summary>Analytic angular frequency ω = √(g·k·tanh(kd)) (rad/s).</summary>
+        public static double AngularFrequency => Math.Sqrt(k_Gravity * Wavenumber * Math.Tanh(Wavenumber * Depth));
+
+        /// <summary>The scene's fluid: <paramref name="parameters"/> at Δx = d/<paramref name="layers"/> in the tank.</summary>
+        public static FluidParameters Tank(FluidParameters parameters, int layers)
+        {
+            float dx = Depth / layers;
+            parameters.ParticleSpacing = dx;
+            parameters.DomainMin = float3.zero;
+            parameters.DomainMax = new float3(Length, 3f * Depth, PeriodicLayers * dx);
+            parameters.Periodic = new bool3(false, false, true);
+            parameters.Gravity = new float3(0f, -k_Gravity, 0f);
+            // Every frame runs all the substeps the CFL limit asks for (d/20 at c₀ = 10 m/s asks for 42), never slow motion.
+            parameters.MaxSubsteps = FluidParameters.SubstepLimit;
+            return parameters;
+        }
+
+        /// <summary>
+        /// Velocity of the mode at t = 0 at <paramref name="x"/> (m/s): ∇φ with B = gA/(ω·cosh(kd)), y from the floor;
+        /// then η_t = φ_y(d) = A·ω·cos(kx) and φ_t + gη = 0 hold at the surface.
+        /// </summary>
+        public static float3 ModeVelocity(float3 x)
+        {
+            double k = Wavenumber, w = AngularFrequency;
+            double b = k_Gravity * Amplitude / (w * Math.Cosh(k * Depth));
+            return new float3((float)(-b * k * Math.Cosh(k * x.y) * Math.Sin(k * x.x)), (float)(b * k * Math.Sinh(k * x.y) * Math.Cos(k * x.x)), 0f);
+        }
+
+        public void Setup()
+        {
+            FluidParameters p = Tank(m_Parameters, m_Layers);
+            m_Constants = new FluidConstants(p);
+            m_Buffers = new FluidBuffers(Size, m_Constants.Grid);
+            FluidScene.FillBlock(m_Buffers, float3.zero, new float3(Length, Depth, p.DomainMax.z), p.ParticleSpacing);
+            m_Initial = m_Buffers.Status.Count;
+            for (int i = 0; i < m_Initial; i++)
+                m_Buffers.Velocities[i] = ModeVelocity(m_Buffers.Positions[i]);
+            int frames = (int)Math.Ceiling(Periods * 2 * Math.PI / AngularFrequency / k_Frame);
+            var t = new double[frames + 1];
+            var centre = new double[frames + 1];
+            centre[0] = CentreX();
+            m_Capped = 0;
+            for (int f = 1; f <= frames; f++)
+            {
+                FluidStepReport r = Frame();
+                if (r.SubstepsWanted > r.Substeps)
+                    m_Capped++;
+                t[f] = t[f - 1] + r.SimulatedTime;
+                centre[f] = CentreX();
+            }
+            var fit = FitFrequency(t, centre, AngularFrequency);
+            m_FrequencyError = Math.Abs(fit.omega / AngularFrequency - 1);
+            m_Damping = fit.damping;
+            m_FittedAmplitude = fit.amplitude;
+            m_FitResidual = fit.residual;
+        }
+
+        FluidStepReport Frame()
+        {
+            FluidBuffers b = m_Buffers;
+            FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
+            m_Items = (long)r.Substeps * r.Count;
+            return r;
+        }
+
+        double CentreX()
+        {
+            double sum = 0;
+            int n = m_Buffers.Status.Count;
+            for (int i = 0; i < n; i++)
+                sum += m_Buffers.Positions[i].x;
+            return n > 0 ? sum / n : double.NaN;
+        }
+
+        /// <summary>Analytic amplitude of the centre of mass along x (m): (1/(Ld))·∫₀ᴸ (x − L/2)·A·cos(kx) dx = 2LA/(π²d).</summary>
+        public static double CentreAmplitude => 2.0 * Length * Amplitude / (Math.PI * Math.PI * Depth);
+
+        /// <summary>
+        /// Least-squares fit of y(t) ≈ e^(−γt)(a·sin ωt + b·cos ωt) + c: for each (ω, γ) the linear coefficients are solved
+        /// exactly; ω is scanned over ±30 % of <paramref name="guess"/> and γ over 0…2ω/(2π), then refined by golden
+        /// sections. Returns ω (rad/s), γ (1/s), √(a² + b²) and the RMS residual (units of y).
+        /// </summary>
+        public static (double omega, double damping, double amplitude, double residual) FitFrequency(double[] t, double[] y, double guess)
+        {
+            double bestOmega = guess, bestDamping = 0, best = double.MaxValue;
+            for (int i = 0; i <= 120; i++)
+            {
+                double w = guess * (0.7 + 0.6 * i / 120.0);
+                for (int j = 0; j <= 20; j++)
+                {
+                    double g = j / 20.0 * 2.0 * w / (2 * Math.PI);
+                    double r = Residual(t, y, w, g, out _);
+                    if (r < best)
+                    {
+                        best = r;
+                        bestOmega = w;
+                        bestDamping = g;
+                    }
+                }
+            }
+            double step = 0.6 * guess / 120.0, gStep = 2.0 * guess / (2 * Math.PI) / 20.0;
+            for (int round = 0; round < 4; round++)
+            {
+                bestOmega = Golden(w => Residual(t, y, w, bestDamping, out _), bestOmega - step, bestOmega + step);
+                bestDamping = Golden(g => Residual(t, y, bestOmega, g, out _), Math.Max(0, bestDamping - gStep), bestDamping + gStep);
+                step *= 0.5;
+                gStep *= 0.5;
+            }
+            double residual = Residual(t, y, bestOmega, bestDamping, out double amplitude);
+            return (bestOmega, bestDamping, amplitude, residual);
+        }
+
+        static double Golden(Func<double, double> f, double lo, double hi)
+        {
+            double phi = (Math.Sqrt(5) - 1) / 2;
+            double a = hi - phi * (hi - lo), b = lo + phi * (hi - lo);
+            double fa = f(a), fb = f(b);
+            for (int i = 0; i < 60; i++)
+            {
+                if (fa < fb) { hi = b; b = a; fb = fa; a = hi - phi * (hi - lo); fa = f(a); }
+                else { lo = a; a = b; fa = fb; b = lo + phi * (hi - lo); fb = f(b); }
+            }
+            return 0.5 * (lo + hi);
+        }
+
+        /// <summary>RMS residual of the best a, b, c for a given ω and γ (3 × 3 normal equations).</summary>
+        static double Residual(double[] t, double[] y, double omega, double damping, out double amplitude)
+        {
+            var m = new double[3, 3];
+            var v = new double[3];
+            int n = t.Length;
+            for (int i = 0; i < n; i++)
+            {
+                double e = Math.Exp(-damping * t[i]);
+                double s = e * Math.Sin(omega * t[i]), c = e * Math.Cos(omega * t[i]);
+                double[] basis = { s, c, 1.0 };
+                for (int r = 0; r < 3; r++)
+                {
+                    v[r] += basis[r] * y[i];
+                    for (int q = 0; q < 3; q++)
+                        m[r, q] += basis[r] * basis[q];
+                }
+            }
+            double[] coef = Solve3(m, v);
+            double sum = 0;
+            for (int i = 0; i < n; i++)
+            {
+                double e = Math.Exp(-damping * t[i]);
+                double d = y[i] - (coef[0] * e * Math.Sin(omega * t[i]) + coef[1] * e * Math.Cos(omega * t[i]) + coef[2]);
+                sum += d * d;
+            }
+            amplitude = Math.Sqrt(coef[0] * coef[0] + coef[1] * coef[1]);
+            return Math.Sqrt(sum / n);
+        }
+
+        static double[] Solve3(double[,] m, double[] v)
+        {
+            double det = Det(m[0, 0], m[0, 1], m[0, 2], m[1, 0], m[1, 1], m[1, 2], m[2, 0], m[2, 1], m[2, 2]);
+            if (!(Math.Abs(det) > 0))
+                return new double[3];
+            return new[]
+            {
+                Det(v[0], m[0, 1], m[0, 2], v[1], m[1, 1], m[1, 2], v[2], m[2, 1], m[2, 2]) / det,
+                Det(m[0, 0], v[0], m[0, 2], m[1, 0], v[1], m[1, 2], m[2, 0], v[2], m[2, 2]) / det,
+                Det(m[0, 0], m[0, 1], v[0], m[1, 0], m[1, 1], v[1], m[2, 0], m[2, 1], v[2]) / det,
+            };
+        }
+
+        static double Det(double a, double b, double c, double d, double e, double f, double g, double h, double i) =>
+            a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+
+        /// <summary>|ω_fit/ω − 1| (after Setup).</summary>
+        public double FrequencyError => m_FrequencyError;
+
+        /// <summary>Fitted amplitude of the centre of mass over the analytic <see cref="CentreAmplitude"/> (after Setup).</summary>
+        public double AmplitudeRatio => m_FittedAmplitude / CentreAmplitude;
+
+        public void Step() => Frame();
+
+        public IReadOnlyList<Metric> Evaluate() => new[]
+        {
+            new Metric("frequency error", m_FrequencyError, MetricUnit.Fraction),
+            new Metric("damping ratio", m_Damping / AngularFrequency, MetricUnit.Dimensionless),
+            new Metric("amplitude ratio", AmplitudeRatio, MetricUnit.Dimensionless),
+            new Metric("fit residual", m_FitResidual / CentreAmplitude, MetricUnit.Fraction),
+            new Metric("spacing", 1000.0 * Depth / m_Layers, MetricUnit.Millimetre),
+            new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
+            new Metric("frames at the substep cap", m_Capped, MetricUnit.Count),
+        };
+    }
+}
