@@ -10,6 +10,8 @@
 #define FLUID_GROUP 256
 // Neighbour list capacity per particle (FluidScratch.MaxNeighbours).
 #define MAX_NEIGHBOURS 64
+// Largest viscosity renormalization, and smallest its inverse (FluidConstants.MaxViscosityRenormalization).
+#define MAX_VISCOSITY_RENORMALIZATION 1.1
 #define FLOAT_MAX 3.402823466e+38
 
 // _Stats slots (FluidComputeLayout.Stat* on the C# side).

@@ -55,7 +55,7 @@ cbuffer FluidComputeConstants
     float GradientTraceScale;           // −κ∇·m·C_spiky
     float GradientWallScale;            // the walls' trace scale κ_T
     float MaxGradientRenormalization;   // largest gradient renormalization
-    float Unused;                       // fills the last row: the size stays a multiple of 16 bytes
+    float ViscosityMomentScale;         // FluidConstants.ViscosityMomentScale (m⁶/kg)
 };
 
 #endif

@@ -81,36 +81,6 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
     gradientTrace = 3.0 * (1.0 - outsideTrace);
 }
 
-// SphKernels.NoSlipWallIntegral: ∫(h − r)(1 + t/d) dV beyond a plane at distance d, the particle's velocity mirrored
-// through zero at the plane (m⁴); d at least 1e-3·h.
-float NoSlipWallIntegral(float d)
-{
-    float H = SmoothingLength;
-    if (!(d < H)) return 0.0;
-    d = max(d, 1e-3 * H);
-    float e = H - d;
-    float e3 = e * e * e;
-    return 3.14159265358979 / 6.0 * e3 * (H + d) + 3.14159265358979 / 20.0 * e3 * e * (H + 2.0 / 3.0 * d) / d;
-}
-
-// FluidBoundary.NoSlipWeight: Σ over the faces of the no-slip share times the wall integral (zero shares on periodic axes),
-// and the colliders' share at each collider's tangent plane.
-float NoSlipWeight(float3 x)
-{
-    float3 below = x - DomainMin, above = DomainMax - x;
-    float weight = FaceNoSlip.x * (NoSlipWallIntegral(below.x) + NoSlipWallIntegral(above.x))
-        + FaceNoSlip.y * (NoSlipWallIntegral(below.y) + NoSlipWallIntegral(above.y))
-        + FaceNoSlip.z * (NoSlipWallIntegral(below.z) + NoSlipWallIntegral(above.z));
-    if (ColliderNoSlip > 0.0)
-        for (uint c = 0; c < ColliderCount; c++)
-        {
-            float3 normal; float depth; bool deep;
-            if (Penetration(LoadShape(c), x, SmoothingLength, normal, depth, deep))
-                weight += ColliderNoSlip * NoSlipWallIntegral(SmoothingLength - depth);
-        }
-    return weight;
-}
-
 // FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,
 // with the faces' friction μ per axis, cancels the motion along them since start by at most Σ μ_axis × depth_axis (and the velocity by that share).
 void ClampToDomain(inout float3 x, inout float3 v, float3 start)

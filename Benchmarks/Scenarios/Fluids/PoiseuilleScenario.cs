@@ -11,7 +11,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// and driven by a body force f along x. The steady profile is u(y) = f/(2ν)·y(W − y), peak u_max = fW²/(8ν) at the
     /// centre line; the slowest transient decays as e^(−π²νt/W²). Setup runs <see cref="SettleSeconds"/> in 1/60 s frames and
     /// measures the mean profile's error (the RMS over layers Δx thick of the layer's mean u_x against u at its mean y, as
-    /// a fraction of u_max), the particles' scatter about u(y), the mean flow against 2/3·u_max and the cross flow. Each timed Step is one more 1/60 s frame; an item is one particle-substep.
+    /// a fraction of u_max; the layer means optionally averaged over the last frames), the particles' scatter about u(y), the mean flow against 2/3·u_max and the cross flow. Each timed Step is one more 1/60 s frame; an item is one particle-substep.
     /// </summary>
     public sealed class PoiseuilleScenario : IScenario
     {
@@ -31,6 +31,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         const float k_Frame = 1f / 60f;
 
         readonly int m_Layers;
+        readonly int m_Averaged;
         readonly float m_Settle;
         readonly FluidParameters m_Parameters;
         readonly string m_Setting;
@@ -44,9 +45,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="parameters">The fluid; spacing, domain, gravity, faces and viscosity are set by the scene.</param>
         /// <param name="setting">The row's label.</param>
         /// <param name="settleSeconds">Seconds before the measurement (default <see cref="SettleSeconds"/>).</param>
-        public PoiseuilleScenario(int layers, FluidParameters parameters, string setting, float settleSeconds = SettleSeconds)
+        /// <param name="averagedFrames">Frames, the last of the settling, over which the profile error's layer means are averaged (default 1: the last frame's).</param>
+        public PoiseuilleScenario(int layers, FluidParameters parameters, string setting, float settleSeconds = SettleSeconds, int averagedFrames = 1)
         {
             m_Settle = settleSeconds;
+            m_Averaged = Math.Max(1, averagedFrames);
             m_Layers = layers;
             m_Parameters = parameters;
             m_Setting = setting;
@@ -87,9 +90,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             FluidScene.FillBlock(m_Buffers, p.DomainMin, p.DomainMax, p.ParticleSpacing);
             m_Initial = m_Buffers.Status.Count;
             int frames = (int)Math.Round(m_Settle / k_Frame);
+            int averaged = Math.Min(m_Averaged, frames);
+            var speed = new double[m_Layers];
+            var height = new double[m_Layers];
             for (int f = 0; f < frames; f++)
+            {
                 Frame();
-            Measure();
+                if (f < frames - averaged)
+                    continue;
+                var (u, y) = MeanProfile(m_Buffers, m_Layers);
+                for (int k = 0; k < m_Layers; k++)
+                {
+                    speed[k] += u[k] / averaged;
+                    height[k] += y[k] / averaged;
+                }
+            }
+            Measure(speed, height);
         }
 
         FluidStepReport Frame()
@@ -125,7 +141,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return (sumU, sumY);
         }
 
-        void Measure()
+        /// <summary>The particles' metrics now, and the profile error of the layer means <paramref name="speed"/> at <paramref name="height"/>.</summary>
+        void Measure(double[] speed, double[] height)
         {
             FluidBuffers b = m_Buffers;
             int n = b.Status.Count;
@@ -139,7 +156,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 cross += math.sqrt(v.y * v.y + v.z * v.z);
                 density += Math.Abs(b.Densities[i] / rho0 - 1);
             }
-            var (speed, height) = MeanProfile(b, m_Layers);
             double profile = 0;
             int layers = 0;
             for (int k = 0; k < m_Layers; k++)
@@ -158,7 +174,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_DensityError = density / n;
         }
 
-        /// <summary>RMS over the layers Δx thick of the mean u_x − u(mean y), as a fraction of u_max (after Setup).</summary>
+        /// <summary>RMS over the layers Δx thick of the mean u_x − u(mean y), as a fraction of u_max (after Setup; the means over the averaged frames).</summary>
         public double ProfileError => m_ProfileError;
 
         public void Step() => Frame();

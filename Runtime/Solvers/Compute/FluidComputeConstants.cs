@@ -95,8 +95,8 @@ namespace SoftBodyDynamics.Solvers
         public float GradientWallScale;
         /// <summary><see cref="FluidConstants.MaxGradientRenormalization"/>.</summary>
         public float MaxGradientRenormalization;
-        /// <summary>Fills the last 16-byte row.</summary>
-        public float Unused;
+        /// <summary><see cref="FluidConstants.ViscosityMomentScale"/>.</summary>
+        public float ViscosityMomentScale;
 
         /// <summary>
         /// The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds, with
@@ -161,6 +161,7 @@ namespace SoftBodyDynamics.Solvers
                 GradientTraceScale = c.GradientTraceScale,
                 GradientWallScale = c.GradientWallScale,
                 MaxGradientRenormalization = FluidConstants.MaxGradientRenormalization,
+                ViscosityMomentScale = c.ViscosityMomentScale,
             };
         }
     }

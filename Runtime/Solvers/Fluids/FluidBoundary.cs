@@ -85,30 +85,6 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Σ over the domain faces within h of <paramref name="x"/> of the no-slip share s (<see cref="FluidParameters.DomainNoSlip"/>)
-        /// times the no-slip wall integral (m⁴; <see cref="SphKernels.NoSlipWallIntegral"/>): the viscosity kernel's Laplacian
-        /// over the wall with the particle's velocity mirrored through zero at the face, up to the factor the particles' sum
-        /// shares. It only adds to the particle's own weight in the viscosity solve. Periodic axes have no faces. With
-        /// <see cref="FluidParameters.WallNoSlip"/> every collider within h adds its share of the same integral at its tangent
-        /// plane (the walls of <see cref="Sample"/>).
-        /// </summary>
-        public static float NoSlipWeight(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x)
-        {
-            SphKernels k = c.Kernels;
-            float3 s = c.FaceNoSlip;
-            float3 below = x - c.Parameters.DomainMin, above = c.Parameters.DomainMax - x;
-            float weight = s.x * (k.NoSlipWallIntegral(below.x) + k.NoSlipWallIntegral(above.x))
-                + s.y * (k.NoSlipWallIntegral(below.y) + k.NoSlipWallIntegral(above.y))
-                + s.z * (k.NoSlipWallIntegral(below.z) + k.NoSlipWallIntegral(above.z));
-            float share = c.Parameters.WallNoSlip;
-            if (share > 0f)
-                for (int w = 0; w < colliders.Length; w++)
-                    if (ParticleCollision.Penetration(colliders[w], x, k.H, out _, out float depth))
-                        weight += share * k.NoSlipWallIntegral(k.H - depth);
-            return weight;
-        }
-
-        /// <summary>
         /// Keeps <paramref name="x"/> at least <see cref="FluidConstants.WallDistance"/> inside the domain box and
         /// removes the velocity component into a face it touches; on a periodic axis it wraps <paramref name="x"/> into the box instead. With <see cref="FluidParameters.DomainFriction"/> μ (per
         /// axis) the faces are Coulomb walls like the colliders (<see cref="ContactProjection"/>): the motion along them since

@@ -55,6 +55,18 @@ namespace SoftBodyDynamics.Solvers
         /// </summary>
         public readonly float ViscosityCorrection;
         /// <summary>
+        /// 3/(m·C_visc·κ_ν) (m⁶/kg), C_visc = 45/(πh⁶): with wᵢⱼ = (h − r)/(ρᵢ + ρⱼ),
+        /// 2m·C_visc·κ_ν·Σⱼ wᵢⱼ·rᵢⱼ² is κ_ν·Σⱼ (m/ρ)·∇²W·r², 6 on the rest lattice (the trace of Σⱼ (m/ρ)·∇²W·rᵢⱼ⊗rᵢⱼ = 2I),
+        /// so this over the particle's Σⱼ wᵢⱼ·rᵢⱼ² is 1 there.
+        /// </summary>
+        public readonly float ViscosityMomentScale;
+        /// <summary>
+        /// Largest <see cref="ViscosityRenormalization"/> (and smallest, its inverse): lattice layers sliding past each other in a
+        /// shear flow fall a few per cent short of the aligned lattice's moment, and so does a settled fluid's disorder, while a
+        /// particle at a free surface or a free-slip wall, whose missing neighbours would ask for far more, gets only this.
+        /// </summary>
+        public const float MaxViscosityRenormalization = 1.1f;
+        /// <summary>
         /// Weakly compressible: the bulk-viscous pressure −ρ₀ζ·∇·vᵢ is this times D/ρᵢ, D = Σⱼ (vᵢ − vⱼ)·xᵢⱼ·(h² − r²)²
         /// (the Density pass's sum): ∇·vᵢ = (m/ρᵢ)·Σⱼ (vⱼ − vᵢ)·∇W_poly6 = −6C·κ₆·(m/ρᵢ)·D with the poly6 gradient
         /// ∇W = −6C(h² − r²)²·xᵢⱼ, no square root, and κ₆ its lattice correction (as <see cref="GradientCorrection"/>),
@@ -95,6 +107,7 @@ namespace SoftBodyDynamics.Solvers
                 ? -GradientCorrection * Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.GradientDotOffset, true) / wallTrace
                 : 1f;
             ViscosityCorrection = 2f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.ViscosityLaplacianZ2, false));
+            ViscosityMomentScale = 3f / (Mass * Kernels.ViscosityLaplacianCoefficient * ViscosityCorrection);
             float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset, false));
             BulkPressureScale = Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h
                 * 6f * Kernels.Poly6Coefficient * poly6Correction * Mass;
@@ -141,6 +154,16 @@ namespace SoftBodyDynamics.Solvers
             float trace = GradientTraceScale * spikySum / density + wallTrace;
             return math.clamp(3f / trace, 1f / MaxGradientRenormalization, MaxGradientRenormalization);
         }
+
+        /// <summary>
+        /// The factor sᵢ on particle i's viscosity, <see cref="ViscosityMomentScale"/> / Σⱼ wᵢⱼ·rᵢⱼ² clamped to
+        /// 1/<see cref="MaxViscosityRenormalization"/>…<see cref="MaxViscosityRenormalization"/>, wᵢⱼ = (h − r)/(ρᵢ + ρⱼ) over the
+        /// neighbours and the no-slip walls' mirrored ghosts: the trace of the viscosity Laplacian's second-moment matrix, renormalized
+        /// to the rest lattice's (as <see cref="GradientRenormalization"/> does for the gradient), so that layers sheared off the
+        /// lattice, whose kernel sums fall short of the aligned lattice's κ_ν was calibrated on, keep the fluid's viscosity.
+        /// </summary>
+        public float ViscosityRenormalization(float moment) =>
+            math.clamp(ViscosityMomentScale / moment, 1f / MaxViscosityRenormalization, MaxViscosityRenormalization);
 
         /// <summary>
         /// <paramref name="x"/> moved by whole periods into [DomainMin, DomainMax) on the periodic axes; the other axes are

@@ -103,10 +103,10 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainFriction;
         /// <summary>
         /// No-slip share of the domain box's faces normal to x, y and z (0 = free slip, 1 = no slip, between: partial slip),
-        /// acting in the viscosity solve: a face counts as a wall of fluid at rest, the viscous kernel's integral over it
-        /// pulling the particles near it toward zero tangential velocity (the continuous form of Akinci 2012's boundary
-        /// particles, for the viscosity term; <see cref="FluidBoundary.NoSlipWeight"/>). Needs <see cref="Viscosity"/> and
-        /// at least one viscosity iteration. Default 0.
+        /// acting in the viscosity solve: each particle near a face sees itself and its neighbours mirrored through it, moving
+        /// with its own velocity reversed and scaled by their depth (Morris et al. 1997), which pulls it toward zero velocity at
+        /// the face (<see cref="FluidPasses.ViscosityIteration"/>). Needs <see cref="Viscosity"/> and at least one viscosity
+        /// iteration. Default 0.
         /// </summary>
         public float3 DomainNoSlip;
         /// <summary>

@@ -61,7 +61,7 @@ namespace SoftBodyDynamics.Solvers
         public readonly Span<float> Densities;
         /// <summary>Pressure p over ρ² times the gradient renormalization κᵢ/κ∇ (weakly compressible, m²/(s²·kg/m³); <see cref="FluidConstants.GradientRenormalization"/>) or the constraint multiplier λ (position-based).</summary>
         public readonly Span<float> Pressures;
-        /// <summary>Float scratch for reordering.</summary>
+        /// <summary>Float scratch for reordering; during the viscosity solve, each particle's viscosity renormalization (0 until the substep's first iteration sets it).</summary>
         public readonly Span<float> Floats;
         /// <summary>Positions at the start of the substep (position-based) or surface normals (Akinci).</summary>
         public readonly Span<float3> Previous;

@@ -385,9 +385,12 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// One Jacobi iteration of implicit viscosity (backward Euler of Müller 2003's viscosity term, eq. 14):
-        /// v⁽ᵏ⁺¹⁾ᵢ = (v⁰ᵢ + hν·Σⱼ wᵢⱼ·v⁽ᵏ⁾ⱼ) / (1 + hν·Σⱼ wᵢⱼ), wᵢⱼ = m·2/(ρᵢ + ρⱼ)·∇²W_visc(rᵢⱼ) ≥ 0. Each iterate is a
-        /// weighted average of v⁰ and neighbours, so it is bounded for any h·ν; the symmetric weight conserves momentum
-        /// at convergence. v⁰ is <see cref="FluidParticles.Velocities"/>.
+        /// v⁽ᵏ⁺¹⁾ᵢ = (v⁰ᵢ + hν·Σⱼ sᵢⱼwᵢⱼ·v⁽ᵏ⁾ⱼ) / (1 + hν·Σⱼ sᵢⱼwᵢⱼ + hν·gᵢ), wᵢⱼ = m·2/(ρᵢ + ρⱼ)·∇²W_visc(rᵢⱼ)·κ_ν ≥ 0.
+        /// Each iterate is a weighted average of v⁰ and neighbours, so it is bounded for any h·ν; with sᵢⱼ = (sᵢ + sⱼ)/2 the
+        /// weights are symmetric and conserve momentum at convergence. sᵢ is the second-moment renormalization
+        /// (<see cref="FluidConstants.ViscosityRenormalization"/>), which the first iteration of a substep computes into
+        /// <see cref="FluidScratch.Floats"/> (cleared by <see cref="FluidPass.CopyVelocitiesToA"/>) using sᵢⱼ = sᵢ; later ones read
+        /// it back. gᵢ is the no-slip walls' mirrored ghosts (MirroredGhosts). v⁰ is <see cref="FluidParticles.Velocities"/>.
         /// </summary>
         public static void ViscosityIteration(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s,
             ReadOnlySpan<float3> source, Span<float3> destination, int start, int end, float h)
@@ -408,28 +411,125 @@ namespace SoftBodyDynamics.Solvers
             const int cap = FluidScratch.MaxNeighbours;
             ReadOnlySpan<float3> x = p.Positions, v0 = p.Velocities;
             ReadOnlySpan<float> densities = s.Densities;
+            Span<float> scales = s.Floats;
             ReadOnlySpan<int> neighbours = s.Neighbours;
             float hk = k.H;
-            bool noSlip = math.any(c.FaceNoSlip > 0f) || (c.Parameters.WallNoSlip > 0f && colliders.Length > 0);
-            float wallWeight = c.Parameters.RestDensity / c.Mass;
+            float3 faces = c.FaceNoSlip, lo = c.Parameters.DomainMin, hi = c.Parameters.DomainMax;
+            bool anyFace = math.any(faces > 0f);
+            float colliderShare = c.Parameters.WallNoSlip;
+            if (!(colliderShare > 0f))
+                colliders = default;
             for (int i = start; i < end; i++)
             {
                 float3 xi = x[i];
                 float rhoi = densities[i];
+                float si = scales[i];
+                // Before the substep's first iteration the scale is 0: that iteration weighs every pair by sᵢ alone.
+                bool first = !(si > 0f);
                 float3 sum = float3.zero;
-                // A no-slip face mirrors the particle's own velocity through zero (ghost ∝ −vᵢ): it adds only to the weight.
-                float weight = noSlip ? wallWeight * FluidBoundary.NoSlipWeight(c, colliders, xi) / (rhoi + c.Parameters.RestDensity) : 0f;
+                float weight = 0f, moment = 0f;
                 ReadOnlySpan<int> list = neighbours.Slice(i * cap, s.NeighbourCounts[i]);
                 for (int n = 0; n < list.Length; n++)
                 {
                     int j = list[n];
-                    float r = math.length(offset.Of(xi, x[j]));
-                    float w = math.max(hk - r, 0f) / (rhoi + densities[j]);
+                    float r2 = math.lengthsq(offset.Of(xi, x[j]));
+                    float w = math.max(hk - math.sqrt(r2), 0f) / (rhoi + densities[j]);
+                    moment += w * r2;
+                    w *= first ? 1f : 0.5f * (si + scales[j]);
                     sum += w * source[j];
                     weight += w;
                 }
+                var row = new ViscosityRow<TOffset>(x, densities, scales, list, xi, rhoi, first ? 0f : si, hk, offset);
+                if (anyFace)
+                    for (int a = 0; a < 3; a++)
+                    {
+                        float share = faces[a];
+                        if (!(share > 0f))
+                            continue;
+                        float below = xi[a] - lo[a], above = hi[a] - xi[a];
+                        float3 axis = float3.zero;
+                        axis[a] = 1f;
+                        if (below < hk)
+                            MirroredGhosts(row, axis, below, share, ref weight, ref moment);
+                        if (above < hk)
+                            MirroredGhosts(row, -axis, above, share, ref weight, ref moment);
+                    }
+                for (int w = 0; w < colliders.Length; w++)
+                    // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+                    if (ParticleCollision.Penetration(colliders[w], xi, hk, out float3 normal, out float depth))
+                        MirroredGhosts(row, normal, hk - depth, colliderShare, ref weight, ref moment);
+                if (first)
+                {
+                    si = c.ViscosityRenormalization(moment);
+                    scales[i] = si;
+                    sum *= si;
+                    weight *= si;
+                }
                 destination[i] = (v0[i] + hnuScaled * sum) / (1f + hnuScaled * weight);
             }
+        }
+
+        /// <summary>Particle i's neighbourhood for MirroredGhosts; <see cref="Si"/> is 0 in a substep's first iteration.</summary>
+        readonly ref struct ViscosityRow<TOffset> where TOffset : struct, IPairOffset
+        {
+            public readonly ReadOnlySpan<float3> X;
+            public readonly ReadOnlySpan<float> Densities, Scales;
+            public readonly ReadOnlySpan<int> List;
+            public readonly float3 Xi;
+            public readonly float Rhoi, Si, H;
+            public readonly TOffset Offset;
+
+            public ViscosityRow(ReadOnlySpan<float3> x, ReadOnlySpan<float> densities, ReadOnlySpan<float> scales, ReadOnlySpan<int> list,
+                float3 xi, float rhoi, float si, float h, TOffset offset)
+            {
+                X = x;
+                Densities = densities;
+                Scales = scales;
+                List = list;
+                Xi = xi;
+                Rhoi = rhoi;
+                Si = si;
+                H = h;
+                Offset = offset;
+            }
+        }
+
+        /// <summary>
+        /// The mirrored ghosts of a no-slip wall (Morris et al. 1997) at distance <paramref name="d"/> from particle i, unit normal
+        /// <paramref name="n"/> into the fluid, no-slip share σ: particle i and each neighbour j at tⱼ = d + (xⱼ − xᵢ)·n &gt; 0 from the
+        /// plane mirrored through it, so that the ghost of j is |rᵢ_g|² = |rᵢⱼ|² − ((xⱼ − xᵢ)·n)² + (d + tⱼ)² from i, with velocity
+        /// −vᵢ·tⱼ/d; its pair term σwᵢ_g·(v_g − vᵢ) = −σwᵢ_g·(1 + tⱼ/d)·vᵢ adds only to i's weight. The ghosts also complete i's second
+        /// moment (unscaled). d is taken at least 10⁻³h.
+        /// </summary>
+        static void MirroredGhosts<TOffset>(in ViscosityRow<TOffset> row, float3 n, float d, float share, ref float weight, ref float moment)
+            where TOffset : struct, IPairOffset
+        {
+            d = math.max(d, 1e-3f * row.H);
+            bool first = !(row.Si > 0f);
+            // i's own ghost at 2d: tᵢ = d, so 1 + tᵢ/d = 2.
+            MirroredGhost(row.H, 0f, 2f * d, 2f, share / (2f * row.Rhoi), first ? 1f : row.Si, ref weight, ref moment);
+            for (int m = 0; m < row.List.Length; m++)
+            {
+                int j = row.List[m];
+                float3 rij = row.Offset.Of(row.Xi, row.X[j]);
+                float along = -math.dot(rij, n);
+                float t = d + along;
+                if (!(t > 0f))
+                    continue;
+                float pair = first ? 1f : 0.5f * (row.Si + row.Scales[j]);
+                MirroredGhost(row.H, math.lengthsq(rij) - along * along, d + t, 1f + t / d, share / (row.Rhoi + row.Densities[j]), pair, ref weight, ref moment);
+            }
+        }
+
+        /// <summary>One ghost at tangential distance² <paramref name="tangential2"/> and normal distance <paramref name="normal"/> from i: weight σ·(h − r)/(ρᵢ + ρⱼ) times <paramref name="factor"/> (1 + t/d) and the pair scale.</summary>
+        static void MirroredGhost(float h, float tangential2, float normal, float factor, float shareOverDensity, float pair, ref float weight, ref float moment)
+        {
+            float r2 = tangential2 + normal * normal;
+            if (!(r2 < h * h))
+                return;
+            float w = shareOverDensity * (h - math.sqrt(r2));
+            moment += w * r2;
+            weight += pair * factor * w;
         }
 
         /// <summary>
@@ -663,7 +763,11 @@ namespace SoftBodyDynamics.Solvers
                 case FluidPass.Forces: Forces(c, colliders, p, s, s.VectorsA, start, end, h, true); break;
                 case FluidPass.CohesionForces: Forces(c, colliders, p, s, s.VectorsA, start, end, h, false); break;
                 case FluidPass.CopyAToVelocities: s.VectorsA.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;
-                case FluidPass.CopyVelocitiesToA: p.Velocities.Slice(start, n).CopyTo(s.VectorsA.Slice(start, n)); break;
+                case FluidPass.CopyVelocitiesToA:
+                    p.Velocities.Slice(start, n).CopyTo(s.VectorsA.Slice(start, n));
+                    // The viscosity renormalization of the coming iterations is not known yet (ViscosityIteration).
+                    s.Floats.Slice(start, n).Clear();
+                    break;
                 case FluidPass.ViscosityAToB: ViscosityIteration(c, colliders, p, s, s.VectorsA, s.VectorsB, start, end, h); break;
                 case FluidPass.ViscosityBToA: ViscosityIteration(c, colliders, p, s, s.VectorsB, s.VectorsA, start, end, h); break;
                 case FluidPass.CopyBToVelocities: s.VectorsB.Slice(start, n).CopyTo(p.Velocities.Slice(start, n)); break;

@@ -95,23 +95,6 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// ∫ (h − r)·(1 + t/d) dV over the half-space beyond a plane at distance <paramref name="d"/> (m⁴), t the depth beyond
-        /// the plane: the viscosity kernel's Laplacian (up to its coefficient) over a no-slip wall whose ghost velocity is the
-        /// particle's own extrapolated linearly through zero at the plane, −vᵢ·t/d (Morris et al. 1997), so a linear shear
-        /// profile meets the wall exactly. ∫ (h − r) dV = (π/6)(h − d)³(h + d) and ∫ (h − r)·t dV = (π/20)(h − d)⁴(h + 2d/3);
-        /// d is taken at least 10⁻³h.
-        /// </summary>
-        public float NoSlipWallIntegral(float d)
-        {
-            if (!(d < H))
-                return 0f;
-            d = math.max(d, 1e-3f * H);
-            float e = H - d;
-            float e3 = e * e * e;
-            return math.PI / 6f * e3 * (H + d) + math.PI / 20f * e3 * e * (H + 2f / 3f * d) / d;
-        }
-
-        /// <summary>
         /// −∫ r·∇W dV of the spiky kernel over the half-space beyond a plane at distance <paramref name="d"/>, r the offset
         /// from the wall's points to the kernel's centre (dimensionless): the wall's share of the trace of Σⱼ Vⱼ·rᵢⱼ⊗∇W, which
         /// is 3 for a full neighbourhood. 2π·∫_d^h (45/(πh⁶))(h − r)²·r²·(r − d) dr = (3/2)(1 − u)⁴(2u² + 2u + 1), u = d/h.

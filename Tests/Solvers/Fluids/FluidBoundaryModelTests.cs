@@ -96,50 +96,139 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.AreEqual(1f, b.Velocities[0].x, 1e-4f, "the position-based velocity is the motion, not the jump across the box");
         }
 
-        [Test]
-        public void NoSlipWallIntegral_IsTheMirroredKernelLaplacianOverTheHalfSpace()
+        /// <summary>
+        /// The lattice of <paramref name="c"/> filling its domain, each layer across y shifted along x by <paramref name="shear"/>
+        /// times its index (in spacings, wrapped), sorted with its densities.
+        /// </summary>
+        static FluidBuffers ShearedLattice(in FluidConstants c, float shear)
         {
-            // ∫ (h − r)·(1 + t/d) dV over z > d by slab quadrature in double: slab z has the disc integral
-            // 2π(h³/6 − hz²/2 + z³/3) of (h − r); midpoint rule with 20000 slabs, relative error ~1e-9.
-            var k = new SphKernels(0.04f);
-            double h = k.H;
-            foreach (double d in new[] { 0.005, 0.01, 0.02, 0.035 })
+            FluidParameters p = c.Parameters;
+            float3 extent = p.DomainMax - p.DomainMin;
+            int capacity = (int)math.round(extent.x / p.ParticleSpacing) * (int)math.round(extent.y / p.ParticleSpacing) * (int)math.round(extent.z / p.ParticleSpacing);
+            var b = new FluidBuffers(capacity, c.Grid);
+            FluidScene.FillBlock(b, p.DomainMin, p.DomainMax, p.ParticleSpacing);
+            for (int i = 0; i < b.Status.Count; i++)
             {
-                int n = 20000;
-                double sum = 0, dz = (h - d) / n;
-                for (int s = 0; s < n; s++)
-                {
-                    double z = d + (s + 0.5) * dz;
-                    double disc = 2 * Math.PI * (h * h * h / 6 - h * z * z / 2 + z * z * z / 3);
-                    sum += disc * (1 + (z - d) / d) * dz;
-                }
-                Assert.AreEqual(sum, k.NoSlipWallIntegral((float)d), 1e-5 * sum, $"d = {d}");
+                float layer = math.floor((b.Positions[i].y - p.DomainMin.y) / p.ParticleSpacing);
+                float shift = layer * shear - math.floor(layer * shear);
+                b.Positions[i] = c.Wrap(b.Positions[i] + new float3(shift * p.ParticleSpacing, 0f, 0f));
             }
-            Assert.AreEqual(0f, k.NoSlipWallIntegral(0.04f));
+            var counters = new FluidPassCounters();
+            b.Status.Count = FluidSolver.SortParticles(c, b.Particles, b.Scratch, b.Status.Count, false, ref counters);
+            FluidPasses.Density(c, default, b.Particles, b.Scratch, 0, b.Status.Count, ref counters);
+            return b;
+        }
+
+        /// <summary>
+        /// <paramref name="iterations"/> Jacobi iterations of the implicit viscosity from v⁰ = the velocities, as a substep runs
+        /// them (the scale cleared, ping-ponging A and B); returns the last iterate.
+        /// </summary>
+        static float3[] Viscosity(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidBuffers b, int iterations, float h)
+        {
+            int live = b.Status.Count;
+            var counters = new FluidPassCounters();
+            int count = live;
+            FluidPasses.Run(FluidPass.CopyVelocitiesToA, c, colliders, b.Particles, b.Scratch, 0, 1, ref count, h, ref counters);
+            for (int it = 0; it < iterations; it++)
+                FluidPasses.Run((it & 1) == 0 ? FluidPass.ViscosityAToB : FluidPass.ViscosityBToA, c, colliders, b.Particles, b.Scratch, 0, 1, ref count, h, ref counters);
+            return ((iterations & 1) == 1 ? b.VectorsB : b.VectorsA).AsSpan(0, live).ToArray();
+        }
+
+        /// <summary>
+        /// The steady profile of the viscosity operator alone, ν·Lv = −f, in the Poiseuille channel at W/<paramref name="layers"/>
+        /// on the lattice with layers shifted by <paramref name="shear"/> (<see cref="ShearedLattice"/>): implicit substeps with
+        /// a = 15hνκ_ν/H² ≈ 2.7 from the analytic profile, 40 Jacobi iterations each (the fixed point keeps (a/(1 + a))⁴⁰ ≈ 4e-6 of
+        /// h·f), until the slowest mode, decaying by 1/(1 + hνπ²/W²) a substep, has shed 10⁻³ of the initial error. Returns the
+        /// RMS over the layers of the mean u_x against u at the layer's mean y, as a fraction of u_max.
+        /// </summary>
+        static double SteadyProfileError(int layers, float shear)
+        {
+            FluidParameters p = PoiseuilleScenario.Channel(FluidParameters.Default, layers);
+            p.Gravity = float3.zero;
+            var c = new FluidConstants(p);
+            FluidBuffers b = ShearedLattice(c, shear);
+            float h = 0.01f * (10f / layers) * (10f / layers);
+            float f = PoiseuilleScenario.BodyForce, width = PoiseuilleScenario.Width;
+            int substeps = (int)math.ceil(math.log(1000f) / math.log(1f + h * p.Viscosity * math.PI * math.PI / (width * width)));
+            int live = b.Status.Count;
+            for (int i = 0; i < live; i++)
+                b.Velocities[i] = new float3((float)PoiseuilleScenario.Analytic(b.Positions[i].y), 0f, 0f);
+            for (int step = 0; step < substeps; step++)
+            {
+                for (int i = 0; i < live; i++)
+                    b.Velocities[i].x += h * f;
+                Viscosity(c, default, b, 40, h).CopyTo(b.Velocities, 0);
+            }
+            var (speed, height) = PoiseuilleScenario.MeanProfile(b, layers);
+            double error = 0;
+            for (int k = 0; k < layers; k++)
+                error += Math.Pow((speed[k] - PoiseuilleScenario.Analytic(height[k])) / PoiseuilleScenario.PeakSpeed, 2);
+            return Math.Sqrt(error / layers);
+        }
+
+        [Test]
+        public void SteadyViscousShear_OnTheLattice_ConvergesAtSecondOrder()
+        {
+            // κ_ν makes the interior operator exact for the quadratic profile, and the mirrored ghosts' linear extrapolation
+            // −vᵢ·t/d misses the profile's curvature beyond the wall by O(Δx²) of u_max: the error falls by 4 from W/10 to W/20
+            // (a constant slip of the whole profile; measured 1.00 % and 0.25 %), 0.3 leaving room for the next order.
+            double coarse = SteadyProfileError(10, 0f), fine = SteadyProfileError(20, 0f);
+            TestContext.Out.WriteLine($"steady profile RMS error W/10 {100 * coarse:F3} %, W/20 {100 * fine:F3} % of u_max");
+            Assert.Less(fine, 0.3 * coarse);
+        }
+
+        [TestCase(0.5f)]
+        [TestCase(0.618034f)]
+        public void SteadyViscousShear_WithSlidingLayers_KeepsTheViscosity(float shear)
+        {
+            // Layers shifted along x by half a spacing (every other layer), the worst shift, or by the golden ratio times their
+            // index (shifts spread over the spacing), as a shear flow slides them. The lattice sums Σ(h − r)·Δy² that the shear
+            // across y sees fall to 0.94 of the aligned lattice's at a half-spacing shift (0.969 averaged over shifts), and the
+            // viscosity with them; renormalized by the trace Σ(h − r)·r² they are within +1.2 % (a slower profile, by at most
+            // 0.73·1.2 % ≈ 0.9 % of u_max, the RMS of u/u_max being √(8/15)), partly offset by the ghosts' uniform +0.25 % at
+            // W/20 (the aligned lattice's): 0.6 % of u_max, where the unrenormalized operator was 2.8 % and 3.1 %.
+            double error = SteadyProfileError(20, shear);
+            TestContext.Out.WriteLine($"shear {shear}: steady profile RMS error W/20 {100 * error:F3} % of u_max");
+            Assert.Less(error, 0.006);
         }
 
         [Test]
         public void NoSlipCollider_IsTheNoSlipFaceAtItsPlane()
         {
-            // One boundary model: a no-slip plane collider on the floor gives a particle the weight a no-slip floor face does,
-            // up to the float32 round-off of d = h − (h − d) (relative 1e-5 of the integral near the wall).
+            // One boundary model: two Jacobi iterations (the first weighs pairs by sᵢ, the second by (sᵢ + sⱼ)/2) of a block
+            // sliding along a no-slip plane collider on the floor give every particle the velocity a no-slip floor face does, up
+            // to the float32 round-off of d = h − (h − d) (1e-5 relative); both hold the sliding block back, and colliders are
+            // free slip by default. The densities are the floor face's for all (a collider would add its own wall density).
             FluidParameters face = FluidTestScenes.Water(0.02f, float3.zero, new float3(0.4f, 0.4f, 0.4f));
+            face.Gravity = float3.zero;
+            face.Viscosity = 1e-2f;
             face.DomainNoSlip = new float3(0f, 1f, 0f);
             FluidParameters collider = face;
             collider.DomainNoSlip = float3.zero;
             collider.WallNoSlip = 1f;
+            FluidParameters free = collider;
+            free.WallNoSlip = 0f;
             var cf = new FluidConstants(face);
-            var cc = new FluidConstants(collider);
+            FluidBuffers b = FluidTestScenes.Block(cf, 4000, float3.zero, new float3(0.4f, 0.1f, 0.4f));
+            var counters = new FluidPassCounters();
+            b.Status.Count = FluidSolver.SortParticles(cf, b.Particles, b.Scratch, b.Status.Count, false, ref counters);
+            FluidPasses.Density(cf, default, b.Particles, b.Scratch, 0, b.Status.Count, ref counters);
+            for (int i = 0; i < b.Status.Count; i++)
+                b.Velocities[i] = new float3(1f, 0f, 0f);
             var plane = new[] { ColliderShape.Plane(float3.zero, new float3(0f, 1f, 0f)) };
-            foreach (float y in new[] { 0.005f, 0.01f, 0.02f, 0.035f, 0.05f })
+            const float h = 1e-3f;
+            float3[] onFace = Viscosity(cf, default, b, 2, h);
+            float3[] onCollider = Viscosity(new FluidConstants(collider), plane, b, 2, h);
+            float3[] onFreeSlip = Viscosity(new FluidConstants(free), plane, b, 2, h);
+            int held = 0;
+            for (int i = 0; i < b.Status.Count; i++)
             {
-                var x = new float3(0.2f, y, 0.2f);
-                float expected = FluidBoundary.NoSlipWeight(cf, default, x);
-                Assert.AreEqual(expected, FluidBoundary.NoSlipWeight(cc, plane, x), 1e-5f * expected + 1e-12f, $"y = {y}");
+                Assert.AreEqual(onFace[i].x, onCollider[i].x, 1e-5f, $"particle at {b.Positions[i]}");
+                Assert.AreEqual(1f, onFreeSlip[i].x, 1e-6f, "a uniform velocity without a no-slip wall stays");
+                if (onFace[i].x < 0.999f)
+                    held++;
             }
-            Assert.Greater(FluidBoundary.NoSlipWeight(cf, default, new float3(0.2f, 0.01f, 0.2f)), 0f);
-            Assert.AreEqual(0f, FluidBoundary.NoSlipWeight(new FluidConstants(FluidTestScenes.Water(0.02f, float3.zero, new float3(0.4f))), plane,
-                new float3(0.2f, 0.01f, 0.2f)), "free slip by default");
+            Assert.Greater(held, 0, "the no-slip floor holds the first layers back");
         }
 
         [Test]
@@ -157,6 +246,8 @@ namespace SoftBodyDynamics.Tests.Solvers
             var counters = new FluidPassCounters();
             int live = FluidSolver.SortParticles(c, b.Particles, b.Scratch, b.Status.Count, false, ref counters);
             FluidPasses.Density(c, default, b.Particles, b.Scratch, 0, live, ref counters);
+            // Each call is a substep's first iteration (the renormalization computed afresh: 1 on the rest lattice).
+            b.Scratch.Floats.Clear();
             const float step = 1e-3f;
             var weight = new float[live];
             for (int i = 0; i < live; i++)
@@ -173,6 +264,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 b.Velocities[i] = new float3(y * y, 0f, 0f);
                 b.Scratch.VectorsA[i] = b.Velocities[i];
             }
+            b.Scratch.Floats.Clear();
             FluidPasses.ViscosityIteration(c, default, b.Particles, b.Scratch, b.Scratch.VectorsA, b.Scratch.VectorsB, 0, live, step);
             int checkedCount = 0;
             double expected = 2.0 * step * p.Viscosity;
@@ -192,16 +284,23 @@ namespace SoftBodyDynamics.Tests.Solvers
         public void PoiseuilleFlow_ConvergedViscosity_ConvergesToTheAnalyticProfile()
         {
             // At the default viscosity iterations (which the step raises until the solve converges) the profile error falls at
-            // least first order from W/5 to W/10 and reaches the 1 % of u_max the package promises for a bought resolution (a
-            // fluid at rest in a free-slip channel would be 67 %).
+            // least first order from W/5 to W/10 and on to W/20, and reaches the 1 % of u_max the package promises for a bought
+            // resolution (a fluid at rest in a free-slip channel would be 67 %). The layer means are averaged over the last 0.5 s
+            // of the 1.6 s (the transient is down to 2e-5 of u_max from 1.1 s on), which evens out the few-tenths-of-a-per-cent
+            // scatter of single frames at W/20, where the pressure's jitter is as large as the profile's remaining error.
             FluidParameters p = FluidParameters.Default;
             p.SpeedOfSound = 10f * PoiseuilleScenario.PeakSpeed;
-            var coarse = new PoiseuilleScenario(5, p, "test");
-            var fine = new PoiseuilleScenario(10, p, "test");
+            const int averaged = 30;
+            var coarse = new PoiseuilleScenario(5, p, "test", averagedFrames: averaged);
+            var medium = new PoiseuilleScenario(10, p, "test", averagedFrames: averaged);
+            var fine = new PoiseuilleScenario(20, p, "test", averagedFrames: averaged);
             coarse.Setup();
+            medium.Setup();
             fine.Setup();
-            Assert.Less(fine.ProfileError, 0.5 * coarse.ProfileError, "first order or better");
-            Assert.Less(fine.ProfileError, 0.01);
+            TestContext.Out.WriteLine($"profile RMS error W/5 {100 * coarse.ProfileError:F3} %, W/10 {100 * medium.ProfileError:F3} %, W/20 {100 * fine.ProfileError:F3} %");
+            Assert.Less(medium.ProfileError, 0.5 * coarse.ProfileError, "first order or better from W/5 to W/10");
+            Assert.Less(fine.ProfileError, 0.5 * medium.ProfileError, "first order or better from W/10 to W/20");
+            Assert.Less(medium.ProfileError, 0.01);
         }
 
         [Test]

@@ -144,6 +144,11 @@ namespace SoftBodyDynamics.Tests.Compute
                     AssertClose(GpuState.Compare(back.VectorsA, cpu.VectorsA, count), where + ": vectors A", report);
                     AssertClose(GpuState.Compare(back.VectorsB, cpu.VectorsB, count), where + ": vectors B", report);
                 }
+                if (pass == FluidPass.ViscosityAToB || pass == FluidPass.ViscosityBToA)
+                {
+                    float[] w = GpuState.W(g, pass == FluidPass.ViscosityAToB ? FluidComputeBuffer.VectorsB : FluidComputeBuffer.VectorsA, capacity);
+                    AssertClose(GpuState.Compare(w, cpu.Floats, count), where + ": viscosity renormalization", report);
+                }
                 if (!sort || pass == FluidPass.SortWithPrevious)
                     AssertClose(GpuState.Compare(back.Previous, cpu.Previous, count), where + ": previous", report);
                 Assert.That(back.NeighbourCounts.AsSpan(0, count).ToArray(), Is.EqualTo(cpu.NeighbourCounts.AsSpan(0, count).ToArray()), where + ": neighbour counts");

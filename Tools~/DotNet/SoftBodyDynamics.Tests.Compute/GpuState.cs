@@ -12,8 +12,9 @@ namespace SoftBodyDynamics.Tests.Compute
         {
             g.Upload(b.Particles, count);
             Put(b.Previous, g.Buffer(FluidComputeBuffer.Previous).As<float4>());
-            Put(b.VectorsA, g.Buffer(FluidComputeBuffer.VectorsA).As<float4>());
-            Put(b.VectorsB, g.Buffer(FluidComputeBuffer.VectorsB).As<float4>());
+            // The CPU keeps the Jacobi iterates' w, the viscosity renormalization, in the float scratch (FluidPasses.ViscosityIteration).
+            Put(b.VectorsA, b.Floats, g.Buffer(FluidComputeBuffer.VectorsA).As<float4>());
+            Put(b.VectorsB, b.Floats, g.Buffer(FluidComputeBuffer.VectorsB).As<float4>());
             b.Densities.AsSpan().CopyTo(g.Buffer(FluidComputeBuffer.Densities).As<float>());
             b.Pressures.AsSpan().CopyTo(g.Buffer(FluidComputeBuffer.Pressures).As<float>());
             b.NeighbourCounts.AsSpan().CopyTo(g.Buffer(FluidComputeBuffer.NeighbourCounts).As<int>());
@@ -44,6 +45,22 @@ namespace SoftBodyDynamics.Tests.Compute
         {
             for (int i = 0; i < source.Length; i++)
                 destination[i] = new float4(source[i], 0f);
+        }
+
+        static void Put(float3[] source, float[] w, Span<float4> destination)
+        {
+            for (int i = 0; i < source.Length; i++)
+                destination[i] = new float4(source[i], w[i]);
+        }
+
+        /// <summary>The w of the GPU's vector scratch <paramref name="buffer"/> (the viscosity renormalization after a viscosity pass into it).</summary>
+        public static float[] W(LavapipeFluidSolver g, FluidComputeBuffer buffer, int capacity)
+        {
+            Span<float4> source = g.Buffer(buffer).As<float4>();
+            var w = new float[capacity];
+            for (int i = 0; i < capacity; i++)
+                w[i] = source[i].w;
+            return w;
         }
 
         static void Get(Span<float4> source, float3[] destination)

@@ -43,9 +43,12 @@ namespace SoftBodyDynamics.Tests.Compute
         /// <summary>
         /// The largest difference between two float32 evaluations (or one and the exact value) of a ray's first hit on a
         /// sphere, from the error of each step of RaySphere: the normalised ray and b = u·c carry a few ε of the eye depth
-        /// z; h² = r² − |c − b u|² carries about 8ε r² absolutely, so h = √h² carries 4ε r²/h. With a factor 4 for the
-        /// division and the rounding of the inputs: 16ε z + 16ε r²/h.
+        /// z; h² = r² − |c − b u|² carries about 8ε r² from its own sums, and the offset c − b u, whose components are
+        /// differences of terms as large as z, about ε z per component, so |c − b u|² ≤ r² carries 2√3·ε z r more; h = √h²
+        /// carries half of that over h. With a factor 4 for the division and the rounding of the inputs:
+        /// 16ε z + 16ε r²/h + 8ε z r/h (the last term dominates at grazing hits, h ≪ r ≪ z).
         /// </summary>
-        public static double HitTolerance(double z, double r, double h) => 16 * Epsilon * z + 16 * Epsilon * r * r / Math.Max(h, 1e-9);
+        public static double HitTolerance(double z, double r, double h) =>
+            16 * Epsilon * z + (16 * Epsilon * r * r + 8 * Epsilon * z * r) / Math.Max(h, 1e-9);
     }
 }
