@@ -1,7 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
-using System.Text;
 using SoftBodyDynamics.Solvers;
 
 namespace SoftBodyDynamics.Benchmarks.Scenarios
@@ -61,35 +59,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string PointLabel(ScenarioOutcome row) => FluidScene.PointOf(row.Method);
 
-        public string CostLabel => "µs per 1/60 s frame (whole scene, all substeps), median";
+        public string CostLabel => FluidSweepTable.CostLabel;
 
-        public double Cost(ScenarioOutcome row) => row.NsPerItem * row.ItemsPerStep * 1e-3;
+        public double Cost(ScenarioOutcome row) => FluidSweepTable.Cost(row);
 
-        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
-        {
-            var md = new StringBuilder();
-            md.AppendLine("| series | resolution | particles | µs/frame | profile error | mean flow error | observed order |");
-            md.AppendLine("|---|---|---:|---:|---:|---:|---:|");
-            ScenarioOutcome previous = default;
-            bool havePrevious = false;
-            foreach (ScenarioOutcome r in rows)
-            {
-                double error = r.Value("profile RMS error");
-                string order = "";
-                if (havePrevious && Series(previous) == Series(r))
-                {
-                    double e0 = previous.Value("profile RMS error"), d0 = previous.Value("spacing"), d1 = r.Value("spacing");
-                    if (e0 > 0 && error > 0 && d0 > d1)
-                        order = F("{0:0.00}", Math.Log(e0 / error) / Math.Log(d0 / d1));
-                }
-                md.AppendLine(F("| {0} | {1} | {2} | {3:0} | {4:0.00} % | {5:0.00} % | {6} |", Series(r), PointLabel(r), r.Size,
-                    Cost(r), 100 * error, 100 * r.Value("mean flow error"), order));
-                previous = r;
-                havePrevious = true;
-            }
-            return md.ToString();
-        }
-
-        static string F(string format, params object[] args) => string.Format(CultureInfo.InvariantCulture, format, args);
+        public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope) =>
+            FluidSweepTable.Write(rows, "profile RMS error", "profile error", "mean flow error", r => FluidSweepTable.F("{0:0.00} %", 100 * r.Value("mean flow error")));
     }
 }
