@@ -21,6 +21,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new SoftBodyMethodsThroughputSuite(),
             new FluidAccuracySuite(),
             new FluidPoiseuilleSuite(),
+            new FluidDropletSuite(),
             new FluidThroughputSuite(),
             new EffectCostSuite(),
             new RendererEffectCostSuite(),
