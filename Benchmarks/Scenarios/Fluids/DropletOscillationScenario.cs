@@ -23,7 +23,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Radius of the lattice ball the drop starts as (m).</summary>
         public const float BallRadius = 0.05f;
         /// <summary>Settling time before the measurements (s).</summary>
-        public const float SettleSeconds = 1f;
+        public const float SettleSeconds = 3f;
         /// <summary>Default surface amplitude of the excited mode over R (the drop's a/R): ε = a/R·ω/2.</summary>
         public const double DefaultAmplitude = 0.1;
         /// <summary>Periods of the mode (at the pressure's σ) recorded.</summary>

@@ -39,7 +39,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                      "(R_g/R_g,0)³ − 1 against the starting lattice ball. One item is one particle-substep; a step is one 1/60 s frame.",
             Notes = new[]
             {
-                "Default run: γ = 0.2 at Δx = 1 cm; full run: both γ at 1 cm, the amplitude rows, and γ = 0.2 at 5 mm (about a minute).",
+                "Default run: γ = 0.2 at Δx = 1 cm; full run: both γ at 1 cm, the amplitude rows, and γ = 0.2 at 5 mm (about 3 min).",
             },
             Details = "fluids.md#droplet-oscillation-fluidaccuracydroplet",
         };
