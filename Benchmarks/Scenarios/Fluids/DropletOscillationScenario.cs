@@ -35,13 +35,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly float m_Spacing;
         readonly FluidParameters m_Parameters;
         readonly string m_Setting;
-        readonly double m_Amplitude0;
+        readonly double m_Excitation;
         FluidConstants m_Constants;
         FluidBuffers m_Buffers;
         long m_Items;
         int m_Initial;
         DropletStress m_Stress;
-        double m_Omega, m_Damping, m_Residual, m_Amplitude, m_InitialGyration;
+        double m_Omega, m_Damping, m_Residual, m_FittedAmplitude, m_InitialGyration;
 
         /// <param name="spacing">Particle spacing Δx (m).</param>
         /// <param name="parameters">The fluid and its cohesion; spacing, domain and gravity are set by the scene.</param>
@@ -49,7 +49,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="amplitude">Surface amplitude a/R of the excited mode.</param>
         public DropletOscillationScenario(float spacing, FluidParameters parameters, string setting, double amplitude = DefaultAmplitude)
         {
-            m_Amplitude0 = amplitude;
+            m_Excitation = amplitude;
             m_Spacing = spacing;
             m_Parameters = parameters;
             m_Setting = setting;
@@ -122,7 +122,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             }
             m_Stress = DropletStress.Mean(samples);
             double guess = m_Stress.RayleighOmega(m_Stress.PressureTension);
-            Excite(m_Buffers, m_Amplitude0 * guess / 2);
+            Excite(m_Buffers, m_Excitation * guess / 2);
             int frames = (int)Math.Ceiling(Periods * 2 * Math.PI / guess / k_Frame);
             var t = new double[frames + 1];
             var q = new double[frames + 1];
@@ -138,7 +138,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Omega = fit.omega;
             m_Damping = fit.damping;
             m_Residual = fit.residual;
-            m_Amplitude = fit.amplitude;
+            m_FittedAmplitude = fit.amplitude;
         }
 
         /// <summary>The recorded times (s) and quadrupoles (m²) after Setup.</summary>
@@ -406,7 +406,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 new Metric("σ ratio", sigmaF / sigmaP, MetricUnit.Dimensionless),
                 new Metric("frequency error", m_Omega / s.RayleighOmega(sigmaP) - 1, MetricUnit.Fraction),
                 new Metric("damping ratio", m_Damping / m_Omega, MetricUnit.Dimensionless),
-                new Metric("fit residual", m_Residual / m_Amplitude, MetricUnit.Fraction),
+                new Metric("fit residual", m_Residual / m_FittedAmplitude, MetricUnit.Fraction),
                 new Metric("volume change", s.VolumeChange(m_Parameters.RestDensity), MetricUnit.Fraction),
                 new Metric("gyration volume change", Math.Pow(s.GyrationRadius / m_InitialGyration, 3) - 1, MetricUnit.Fraction),
                 new Metric("radius", 1000 * s.Radius, MetricUnit.Millimetre),
