@@ -79,7 +79,8 @@ namespace SoftBodyDynamics.Tests.Solvers
         {
             // γ = 0.2, Δx = 1 cm, R = 5 cm (the drop), settled 3 s (seen: σ_EOS = 3.38, σ_p = 1.38, σ_f = 1.44 N/m).
             // The EOS pressure alone leaves out the cohesion's own tension: σ_f/σ_EOS below 1/2. With it, Laplace and
-            // Rayleigh agree to the target, 15 % (seen: 1.05; 1.19 after a 1 s settle, which this would catch). The
+            // Rayleigh agree to the target, 15 %, at this Δx and a/R = 0.1 (seen: 1.05; 1.19 after a 1 s settle, which
+            // this would catch; not at 5 mm, where the frequency's σ depends on the amplitude: fluids.md). The
             // bulk's volume within 1 %: c₀ = 5 m/s compresses it by p/(ρ₀c₀²) = 0.5 % at the Tait p ≈ 135 Pa.
             var drop = new DropletOscillationScenario(0.01f, Akinci(0.2f), "γ = 0.2");
             drop.Setup();
