@@ -22,6 +22,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new FluidAccuracySuite(),
             new FluidPoiseuilleSuite(),
             new FluidStandingWaveSuite(),
+            new FluidDropletSuite(),
             new FluidThroughputSuite(),
             new EffectCostSuite(),
             new RendererEffectCostSuite(),

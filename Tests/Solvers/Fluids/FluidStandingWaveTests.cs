@@ -46,7 +46,7 @@ namespace SoftBodyDynamics.Tests.Solvers
                 t[i] = i / 60.0;
                 y[i] = 0.1 + Math.Exp(-damping * t[i]) * amplitude * Math.Sin(omega * t[i] + 0.3) + 0.1 * amplitude * (2 * random.NextDouble() - 1);
             }
-            var fit = StandingWaveScenario.FitFrequency(t, y, omega * 1.2);
+            var fit = DampedSineFit.Fit(t, y, omega * 1.2);
             Assert.That(fit.omega / omega - 1, Is.EqualTo(0).Within(0.01));
             Assert.That(fit.damping / damping - 1, Is.EqualTo(0).Within(0.2));
             Assert.That(fit.amplitude / amplitude - 1, Is.EqualTo(0).Within(0.05));
