@@ -8,7 +8,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// Fluid accuracy against an analytic solution that converges: plane Poiseuille flow (<see cref="PoiseuilleScenario"/>)
     /// at a resolution sweep, its profile error against µs per 1/60 s frame of the whole scene, with the observed order.
     /// </summary>
-    public sealed class FluidPoiseuilleSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteIndependent
+    public sealed class FluidPoiseuilleSuite : IScenarioSuite, IScenarioSuiteSummary, IScenarioSuiteFigure, IScenarioSuiteFindings, IScenarioSuiteIndependent
     {
         /// <summary>Particle layers across the channel in the full run; the default run stops at <see cref="StandardFinestLayers"/>.</summary>
         public static readonly int[] Layers = { 5, 10, 20, 40 };
@@ -62,6 +62,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string CostLabel => FluidSweepTable.CostLabel;
 
         public double Cost(ScenarioOutcome row) => FluidSweepTable.Cost(row);
+
+        public IEnumerable<Finding> Findings(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
+        {
+            yield return FluidSweepTable.Finding("Poiseuille flow", "layer-mean speed profile against the analytic u(y), over u_max", "profile RMS error", rows);
+        }
 
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope) =>
             FluidSweepTable.Write(rows, "profile RMS error", "profile error", "mean flow error", r => FluidSweepTable.F("{0:0.00} %", 100 * r.Value("mean flow error")));

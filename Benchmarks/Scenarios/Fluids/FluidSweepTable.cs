@@ -45,6 +45,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return md.ToString();
         }
 
+        /// <summary>
+        /// The summary's line for a sweep: per relative threshold (20, 5, 1 %) the cheapest row whose <paramref name="metric"/>
+        /// is within it, in ms per 1/60 s frame.
+        /// </summary>
+        public static AccuracyFinding Finding(string scene, string errorText, string metric, IReadOnlyList<ScenarioOutcome> rows) =>
+            AccuracyFinding.FromRows(scene, errorText, metric, rows, AccuracyFinding.RelativeThresholds, r => Cost(r) * 1e-3, r => r.Method, "ms/frame");
+
         /// <summary>Invariant-culture formatting.</summary>
         public static string F(string format, params object[] args) => string.Format(CultureInfo.InvariantCulture, format, args);
     }
