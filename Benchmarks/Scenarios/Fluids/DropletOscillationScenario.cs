@@ -62,15 +62,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public long ItemsPerStep => Math.Max(1, m_Items);
 
         /// <summary>Lattice points (a point at the centre) within <see cref="BallRadius"/>.</summary>
-        public static int BallCount(float spacing)
+        public static int BallCount(float spacing) => BallPoints(spacing).Count;
+
+        /// <summary>The points of a cubic lattice of <paramref name="spacing"/>, one at the origin, within <see cref="BallRadius"/>.</summary>
+        static List<float3> BallPoints(float spacing)
         {
-            int n = (int)math.floor(BallRadius / spacing + 1e-3f), count = 0;
+            var points = new List<float3>();
+            int n = (int)math.floor(BallRadius / spacing + 1e-3f);
             for (int z = -n; z <= n; z++)
             for (int y = -n; y <= n; y++)
             for (int x = -n; x <= n; x++)
-                if (math.lengthsq(new float3(x, y, z) * spacing) <= BallRadius * BallRadius * (1f + 1e-4f))
-                    count++;
-            return count;
+            {
+                float3 xi = new float3(x, y, z) * spacing;
+                if (math.lengthsq(xi) <= BallRadius * BallRadius * (1f + 1e-4f))
+                    points.Add(xi);
+            }
+            return points;
         }
 
         /// <summary>The scene's fluid: <paramref name="parameters"/> at <paramref name="spacing"/> in a 0.4 m box, no gravity, no slow motion.</summary>
@@ -87,20 +94,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Buffers holding the lattice ball.</summary>
         public static FluidBuffers Ball(in FluidConstants c, float spacing)
         {
-            var b = new FluidBuffers(BallCount(spacing), c.Grid);
-            int n = (int)math.floor(BallRadius / spacing + 1e-3f), count = 0;
-            for (int z = -n; z <= n; z++)
-            for (int y = -n; y <= n; y++)
-            for (int x = -n; x <= n; x++)
+            List<float3> points = BallPoints(spacing);
+            var b = new FluidBuffers(points.Count, c.Grid);
+            for (int i = 0; i < points.Count; i++)
             {
-                float3 xi = new float3(x, y, z) * spacing;
-                if (math.lengthsq(xi) > BallRadius * BallRadius * (1f + 1e-4f))
-                    continue;
-                b.Positions[count] = xi;
-                b.Ids[count] = count;
-                count++;
+                b.Positions[i] = points[i];
+                b.Ids[i] = i;
             }
-            b.Status = new FluidStatus { Count = count, NextId = count, Spawned = count };
+            b.Status = new FluidStatus { Count = points.Count, NextId = points.Count, Spawned = points.Count };
             return b;
         }
 
@@ -132,8 +133,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 t[f] = t[f - 1] + Frame().SimulatedTime;
                 q[f] = Quadrupole(m_Buffers);
             }
-            Times = t;
-            Quadrupoles = q;
             var fit = DampedSineFit.Fit(t, q, CrossingOmega(t, q, guess));
             m_Omega = fit.omega;
             m_Damping = fit.damping;
@@ -141,28 +140,15 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_FittedAmplitude = fit.amplitude;
         }
 
-        /// <summary>The recorded times (s) and quadrupoles (m²) after Setup.</summary>
-        public double[] Times { get; private set; }
-
-        /// <inheritdoc cref="Times"/>
-        public double[] Quadrupoles { get; private set; }
-
         /// <summary>The settled drop's stress (after Setup).</summary>
         public DropletStress Stress => m_Stress;
-
-        /// <summary>Fitted angular frequency ω (rad/s) and damping rate (1/s) after Setup.</summary>
-        public double Omega => m_Omega;
-
-        /// <inheritdoc cref="Omega"/>
-        public double Damping => m_Damping;
 
         /// <summary>σ from the frequency, σ_f = ω²·3M/(32π) (N/m).</summary>
         public double FrequencyTension => m_Omega * m_Omega * 3 * m_Stress.Mass / (32 * Math.PI);
 
         FluidStepReport Frame()
         {
-            FluidBuffers b = m_Buffers;
-            FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
+            FluidStepReport r = FluidScene.Step(m_Constants, m_Buffers, k_Frame);
             m_Items = (long)r.Substeps * r.Count;
             return r;
         }

@@ -21,6 +21,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             return comma > 0 ? method.Substring(comma + 1).Trim() : "";
         }
 
+        /// <summary>One step of <paramref name="dt"/> seconds of the fluid in <paramref name="b"/>, without colliders.</summary>
+        public static FluidStepReport Step(in FluidConstants c, FluidBuffers b, float dt) =>
+            FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, dt, b.Particles, b.Scratch, ref b.Status);
+
         /// <summary>Fills the box [<paramref name="lo"/>, <paramref name="hi"/>) with a cubic lattice at the fluid's spacing (first point half a spacing in) and returns the count.</summary>
         public static int FillBlock(FluidBuffers b, float3 lo, float3 hi, float spacing)
         {

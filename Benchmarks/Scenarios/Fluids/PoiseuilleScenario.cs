@@ -110,8 +110,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         FluidStepReport Frame()
         {
-            FluidBuffers b = m_Buffers;
-            FluidStepReport r = FluidSolver.Step(m_Constants, ReadOnlySpan<ColliderShape>.Empty, k_Frame, b.Particles, b.Scratch, ref b.Status);
+            FluidStepReport r = FluidScene.Step(m_Constants, m_Buffers, k_Frame);
             m_Items = (long)r.Substeps * r.Count;
             return r;
         }
