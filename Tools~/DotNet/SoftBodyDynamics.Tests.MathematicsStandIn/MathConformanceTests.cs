@@ -54,6 +54,31 @@ namespace SoftBodyDynamics.Tests.MathematicsStandIn
         }
 
         [Test]
+        public void Sqrt_GivesTheBitsOfUnitysDoubleRoundedFormula()
+        {
+            // Unity's managed sqrt(float) is (float)System.Math.Sqrt(x); the stand-in's single-precision root must match it
+            // bit for bit: every float of a random bit-pattern sweep, subnormals, powers of two, ±0, ∞, NaN and −1.
+            var random = new System.Random(7);
+            var bits = new byte[4];
+            float[] edges = { 0f, -0f, 1f, 2f, 0.5f, float.Epsilon, 1.17549435e-38f, float.MaxValue, float.PositiveInfinity, float.NaN, -1f, 4f };
+            for (int n = 0; n < 200000 + edges.Length; n++)
+            {
+                float x;
+                if (n < edges.Length)
+                    x = edges[n];
+                else
+                {
+                    random.NextBytes(bits);
+                    x = BitConverter.ToSingle(bits, 0);
+                }
+                float expected = (float)Math.Sqrt(x);
+                float actual = math.sqrt(x);
+                if (BitConverter.SingleToInt32Bits(actual) != BitConverter.SingleToInt32Bits(expected) && !(float.IsNaN(actual) && float.IsNaN(expected)))
+                    Assert.Fail($"sqrt({x:R}) = {actual:R}, Unity's formula gives {expected:R}");
+            }
+        }
+
+        [Test]
         public void IsFinite_IsNaN()
         {
             Assert.That(math.isfinite(float.MaxValue), Is.True);

@@ -5,6 +5,7 @@
 // The conversions between float3x3 and quaternion follow com.unity.mathematics 1.3.2 (matrix.cs, quaternion.cs)
 // operation for operation, so they give Unity's bits, including the sign Unity picks for the quaternion.
 using System;
+using System.Runtime.CompilerServices;
 
 namespace Unity.Mathematics
 {
@@ -15,17 +16,17 @@ namespace Unity.Mathematics
         public static readonly float3x3 identity = new float3x3(1f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 1f);
         public static readonly float3x3 zero;
 
-        public float3x3(float3 c0, float3 c1, float3 c2) { this.c0 = c0; this.c1 = c1; this.c2 = c2; }
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public float3x3(float3 c0, float3 c1, float3 c2) { this.c0 = c0; this.c1 = c1; this.c2 = c2; }
 
         /// <summary>Row-major argument order, as in Unity.Mathematics.</summary>
-        public float3x3(float m00, float m01, float m02, float m10, float m11, float m12, float m20, float m21, float m22)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public float3x3(float m00, float m01, float m02, float m10, float m11, float m12, float m20, float m21, float m22)
         {
             c0 = new float3(m00, m10, m20);
             c1 = new float3(m01, m11, m21);
             c2 = new float3(m02, m12, m22);
         }
 
-        public float3x3(float v) { c0 = v; c1 = v; c2 = v; }
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public float3x3(float v) { c0 = v; c1 = v; c2 = v; }
 
         /// <summary>
         /// Rotation matrix of a unit quaternion, evaluated as Unity does (v2 = v + v; the sign flips of
@@ -35,7 +36,7 @@ namespace Unity.Mathematics
         /// c2 = v2.x·(z, −w, −x) − v2.y·(−w, −z, y) + (0, 0, 1).
         /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.float3x3.-ctor.html#Unity_Mathematics_float3x3__ctor_Unity_Mathematics_quaternion_
         /// </summary>
-        public float3x3(quaternion q)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public float3x3(quaternion q)
         {
             float4 v = q.value;
             float4 v2 = v + v;
@@ -56,17 +57,17 @@ namespace Unity.Mathematics
             }
         }
 
-        public static float3x3 operator +(float3x3 a, float3x3 b) => new float3x3(a.c0 + b.c0, a.c1 + b.c1, a.c2 + b.c2);
-        public static float3x3 operator -(float3x3 a, float3x3 b) => new float3x3(a.c0 - b.c0, a.c1 - b.c1, a.c2 - b.c2);
-        public static float3x3 operator *(float3x3 a, float3x3 b) => new float3x3(a.c0 * b.c0, a.c1 * b.c1, a.c2 * b.c2);
-        public static float3x3 operator *(float3x3 a, float b) => new float3x3(a.c0 * b, a.c1 * b, a.c2 * b);
-        public static float3x3 operator *(float a, float3x3 b) => new float3x3(a * b.c0, a * b.c1, a * b.c2);
-        public static float3x3 operator /(float3x3 a, float b) => new float3x3(a.c0 / b, a.c1 / b, a.c2 / b);
-        public static float3x3 operator -(float3x3 a) => new float3x3(-a.c0, -a.c1, -a.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator +(float3x3 a, float3x3 b) => new float3x3(a.c0 + b.c0, a.c1 + b.c1, a.c2 + b.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator -(float3x3 a, float3x3 b) => new float3x3(a.c0 - b.c0, a.c1 - b.c1, a.c2 - b.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator *(float3x3 a, float3x3 b) => new float3x3(a.c0 * b.c0, a.c1 * b.c1, a.c2 * b.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator *(float3x3 a, float b) => new float3x3(a.c0 * b, a.c1 * b, a.c2 * b);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator *(float a, float3x3 b) => new float3x3(a * b.c0, a * b.c1, a * b.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator /(float3x3 a, float b) => new float3x3(a.c0 / b, a.c1 / b, a.c2 / b);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 operator -(float3x3 a) => new float3x3(-a.c0, -a.c1, -a.c2);
 
-        public bool Equals(float3x3 o) => c0.Equals(o.c0) && c1.Equals(o.c1) && c2.Equals(o.c2);
-        public override bool Equals(object o) => o is float3x3 v && Equals(v);
-        public override int GetHashCode() => (int)math.hash(this);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public bool Equals(float3x3 o) => c0.Equals(o.c0) && c1.Equals(o.c1) && c2.Equals(o.c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public override bool Equals(object o) => o is float3x3 v && Equals(v);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() =>
             $"float3x3({c0.x}f, {c1.x}f, {c2.x}f,  {c0.y}f, {c1.y}f, {c2.y}f,  {c0.z}f, {c1.z}f, {c2.z}f)";
     }
@@ -76,8 +77,8 @@ namespace Unity.Mathematics
     {
         public float4 value;
         public static readonly quaternion identity = new quaternion(0f, 0f, 0f, 1f);
-        public quaternion(float x, float y, float z, float w) { value = new float4(x, y, z, w); }
-        public quaternion(float4 value) { this.value = value; }
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public quaternion(float x, float y, float z, float w) { value = new float4(x, y, z, w); }
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public quaternion(float4 value) { this.value = value; }
 
         /// <summary>
         /// Quaternion of an orthonormal rotation matrix, by Unity's branch-free method: with u, v, w the columns,
@@ -86,7 +87,7 @@ namespace Unity.Mathematics
         /// signs of u.x and t and normalizes. The result is one of ±q, chosen exactly as Unity chooses.
         /// https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.quaternion.-ctor.html#Unity_Mathematics_quaternion__ctor_Unity_Mathematics_float3x3_
         /// </summary>
-        public quaternion(float3x3 m)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public quaternion(float3x3 m)
         {
             const uint S = 0x80000000u;
             float3 u = m.c0, v = m.c1, w = m.c2;
@@ -116,15 +117,15 @@ namespace Unity.Mathematics
             math.asfloat((math.asuint(whenClear) & ~mask) | (math.asuint(whenSet) & mask));
 
         /// <summary>Rotation of <paramref name="angle"/> radians about the unit vector <paramref name="axis"/>.</summary>
-        public static quaternion AxisAngle(float3 axis, float angle)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion AxisAngle(float3 axis, float angle)
         {
             math.sincos(0.5f * angle, out float s, out float c);
             return new quaternion(new float4(axis * s, c));
         }
 
-        public bool Equals(quaternion o) => value.Equals(o.value);
-        public override bool Equals(object o) => o is quaternion v && Equals(v);
-        public override int GetHashCode() => (int)math.hash(this);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public bool Equals(quaternion o) => value.Equals(o.value);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public override bool Equals(object o) => o is quaternion v && Equals(v);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public override int GetHashCode() => (int)math.hash(this);
         public override string ToString() => $"quaternion({value.x}f, {value.y}f, {value.z}f, {value.w}f)";
     }
 }

@@ -16,113 +16,115 @@ namespace Unity.Mathematics
         public const float INFINITY = float.PositiveInfinity;
 
         // ---- construction helpers
-        public static float2 float2(float x, float y) => new float2(x, y);
-        public static float3 float3(float x, float y, float z) => new float3(x, y, z);
-        public static float3 float3(float v) => new float3(v);
-        public static float4 float4(float x, float y, float z, float w) => new float4(x, y, z, w);
-        public static float4 float4(float3 xyz, float w) => new float4(xyz, w);
-        public static float3x3 float3x3(float3 c0, float3 c1, float3 c2) => new float3x3(c0, c1, c2);
-        public static float3x3 float3x3(quaternion q) => new float3x3(q);
-        public static int3 int3(int x, int y, int z) => new int3(x, y, z);
-        public static quaternion quaternion(float4 v) => new quaternion(v);
-        public static quaternion quaternion(float3x3 m) => new quaternion(m);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float2 float2(float x, float y) => new float2(x, y);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 float3(float x, float y, float z) => new float3(x, y, z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 float3(float v) => new float3(v);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float4 float4(float x, float y, float z, float w) => new float4(x, y, z, w);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float4 float4(float3 xyz, float w) => new float4(xyz, w);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 float3x3(float3 c0, float3 c1, float3 c2) => new float3x3(c0, c1, c2);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 float3x3(quaternion q) => new float3x3(q);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int3 int3(int x, int y, int z) => new int3(x, y, z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion quaternion(float4 v) => new quaternion(v);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion quaternion(float3x3 m) => new quaternion(m);
 
         // ---- scalar
-        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sqrt(float x) => (float)System.Math.Sqrt(x);
+        // Unity's managed source rounds System.Math.Sqrt((double)x) to float; that is the correctly rounded float square
+        // root (53 ≥ 2·24 + 2 bits, so the double rounding is innocuous), the bits MathF.Sqrt (sqrtss, as Burst emits) gives.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sqrt(float x) => MathF.Sqrt(x);
         [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float rsqrt(float x) => 1.0f / sqrt(x);
-        public static float rcp(float x) => 1.0f / x;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float rcp(float x) => 1.0f / x;
         /// <summary>Clears the sign bit (NaN stays NaN).</summary>
-        public static float abs(float x) => asfloat(asuint(x) & 0x7FFFFFFFu);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float abs(float x) => asfloat(asuint(x) & 0x7FFFFFFFu);
         /// <summary>max(−x, x): int.MinValue stays int.MinValue (no overflow exception).</summary>
-        public static int abs(int x) => max(-x, x);
-        public static float min(float a, float b) => float.IsNaN(b) || a < b ? a : b;
-        public static float max(float a, float b) => float.IsNaN(b) || a > b ? a : b;
-        public static int min(int a, int b) => a < b ? a : b;
-        public static int max(int a, int b) => a > b ? a : b;
-        public static uint min(uint a, uint b) => a < b ? a : b;
-        public static uint max(uint a, uint b) => a > b ? a : b;
-        public static float clamp(float x, float a, float b) => max(a, min(b, x));
-        public static int clamp(int x, int a, int b) => max(a, min(b, x));
-        public static float saturate(float x) => clamp(x, 0f, 1f);
-        public static float sign(float x) => (x > 0f ? 1f : 0f) - (x < 0f ? 1f : 0f);
-        public static float select(float a, float b, bool c) => c ? b : a;
-        public static float lerp(float a, float b, float t) => a + t * (b - a);
-        public static float pow(float x, float y) => (float)System.Math.Pow(x, y);
-        public static float exp(float x) => (float)System.Math.Exp(x);
-        public static float log(float x) => (float)System.Math.Log(x);
-        public static float sin(float x) => (float)System.Math.Sin(x);
-        public static float cos(float x) => (float)System.Math.Cos(x);
-        public static float acos(float x) => (float)System.Math.Acos(x);
-        public static float asin(float x) => (float)System.Math.Asin(x);
-        public static float atan2(float y, float x) => (float)System.Math.Atan2(y, x);
-        public static float floor(float x) => (float)System.Math.Floor(x);
-        public static float ceil(float x) => (float)System.Math.Ceiling(x);
-        public static float round(float x) => (float)System.Math.Round(x);
-        public static void sincos(float x, out float s, out float c) { s = sin(x); c = cos(x); }
-        public static bool isfinite(float x) => abs(x) < float.PositiveInfinity;
-        public static bool isnan(float x) => (asuint(x) & 0x7FFFFFFF) > 0x7F800000;
-        public static uint asuint(float x) => (uint)BitConverter.SingleToInt32Bits(x);
-        public static int asint(float x) => BitConverter.SingleToInt32Bits(x);
-        public static float asfloat(uint x) => BitConverter.Int32BitsToSingle((int)x);
-        public static float asfloat(int x) => BitConverter.Int32BitsToSingle(x);
-        public static double sqrt(double x) => System.Math.Sqrt(x);
-        public static double abs(double x) => BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) & 0x7FFFFFFFFFFFFFFF);
-        public static double max(double a, double b) => double.IsNaN(b) || a > b ? a : b;
-        public static double min(double a, double b) => double.IsNaN(b) || a < b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int abs(int x) => max(-x, x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float min(float a, float b) => float.IsNaN(b) || a < b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float max(float a, float b) => float.IsNaN(b) || a > b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int min(int a, int b) => a < b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int max(int a, int b) => a > b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint min(uint a, uint b) => a < b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint max(uint a, uint b) => a > b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float clamp(float x, float a, float b) => max(a, min(b, x));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int clamp(int x, int a, int b) => max(a, min(b, x));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float saturate(float x) => clamp(x, 0f, 1f);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sign(float x) => (x > 0f ? 1f : 0f) - (x < 0f ? 1f : 0f);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float select(float a, float b, bool c) => c ? b : a;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float lerp(float a, float b, float t) => a + t * (b - a);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float pow(float x, float y) => (float)System.Math.Pow(x, y);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float exp(float x) => (float)System.Math.Exp(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float log(float x) => (float)System.Math.Log(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float sin(float x) => (float)System.Math.Sin(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float cos(float x) => (float)System.Math.Cos(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float acos(float x) => (float)System.Math.Acos(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float asin(float x) => (float)System.Math.Asin(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float atan2(float y, float x) => (float)System.Math.Atan2(y, x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float floor(float x) => (float)System.Math.Floor(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float ceil(float x) => (float)System.Math.Ceiling(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float round(float x) => (float)System.Math.Round(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static void sincos(float x, out float s, out float c) { s = sin(x); c = cos(x); }
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool isfinite(float x) => abs(x) < float.PositiveInfinity;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool isnan(float x) => (asuint(x) & 0x7FFFFFFF) > 0x7F800000;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint asuint(float x) => (uint)BitConverter.SingleToInt32Bits(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int asint(float x) => BitConverter.SingleToInt32Bits(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float asfloat(uint x) => BitConverter.Int32BitsToSingle((int)x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float asfloat(int x) => BitConverter.Int32BitsToSingle(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static double sqrt(double x) => System.Math.Sqrt(x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static double abs(double x) => BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) & 0x7FFFFFFFFFFFFFFF);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static double max(double a, double b) => double.IsNaN(b) || a > b ? a : b;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static double min(double a, double b) => double.IsNaN(b) || a < b ? a : b;
 
         // ---- bool vectors
-        public static bool any(bool3 x) => x.x || x.y || x.z;
-        public static bool all(bool3 x) => x.x && x.y && x.z;
-        public static bool any(bool4 x) => x.x || x.y || x.z || x.w;
-        public static bool all(bool4 x) => x.x && x.y && x.z && x.w;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool any(bool3 x) => x.x || x.y || x.z;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool all(bool3 x) => x.x && x.y && x.z;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool any(bool4 x) => x.x || x.y || x.z || x.w;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool all(bool4 x) => x.x && x.y && x.z && x.w;
 
         // ---- float3
-        public static float dot(float3 a, float3 b) => a.x * b.x + a.y * b.y + a.z * b.z;
-        public static float3 cross(float3 a, float3 b) => (a * b.yzx - a.yzx * b).yzx;
-        public static float lengthsq(float3 x) => dot(x, x);
-        public static float length(float3 x) => sqrt(dot(x, x));
-        public static float distance(float3 a, float3 b) => length(b - a);
-        public static float distancesq(float3 a, float3 b) => lengthsq(b - a);
-        public static float3 normalize(float3 x) => rsqrt(dot(x, x)) * x;
-        public static float3 normalizesafe(float3 x, float3 defaultvalue = default)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float dot(float3 a, float3 b) => a.x * b.x + a.y * b.y + a.z * b.z;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 cross(float3 a, float3 b) => (a * b.yzx - a.yzx * b).yzx;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float lengthsq(float3 x) => dot(x, x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float length(float3 x) => sqrt(dot(x, x));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float distance(float3 a, float3 b) => length(b - a);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float distancesq(float3 a, float3 b) => lengthsq(b - a);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 normalize(float3 x) => rsqrt(dot(x, x)) * x;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 normalizesafe(float3 x, float3 defaultvalue = default)
         {
             float len = dot(x, x);
             return select(defaultvalue, x * rsqrt(len), len > FLT_MIN_NORMAL);
         }
-        public static float3 select(float3 a, float3 b, bool c) => c ? b : a;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 select(float3 a, float3 b, bool c) => c ? b : a;
         // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.select.html#Unity_Mathematics_math_select_Unity_Mathematics_float3_Unity_Mathematics_float3_Unity_Mathematics_bool3_
-        public static float3 select(float3 a, float3 b, bool3 c) => new float3(c.x ? b.x : a.x, c.y ? b.y : a.y, c.z ? b.z : a.z);
-        public static float3 abs(float3 x) => new float3(abs(x.x), abs(x.y), abs(x.z));
-        public static float3 min(float3 a, float3 b) => new float3(min(a.x, b.x), min(a.y, b.y), min(a.z, b.z));
-        public static float3 max(float3 a, float3 b) => new float3(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z));
-        public static float3 clamp(float3 x, float3 a, float3 b) => max(a, min(b, x));
-        public static float3 lerp(float3 a, float3 b, float t) => a + t * (b - a);
-        public static float3 sign(float3 x) => new float3(sign(x.x), sign(x.y), sign(x.z));
-        public static float3 floor(float3 x) => new float3(floor(x.x), floor(x.y), floor(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 select(float3 a, float3 b, bool3 c) => new float3(c.x ? b.x : a.x, c.y ? b.y : a.y, c.z ? b.z : a.z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 abs(float3 x) => new float3(abs(x.x), abs(x.y), abs(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 min(float3 a, float3 b) => new float3(min(a.x, b.x), min(a.y, b.y), min(a.z, b.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 max(float3 a, float3 b) => new float3(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 clamp(float3 x, float3 a, float3 b) => max(a, min(b, x));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 lerp(float3 a, float3 b, float t) => a + t * (b - a);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 sign(float3 x) => new float3(sign(x.x), sign(x.y), sign(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 floor(float3 x) => new float3(floor(x.x), floor(x.y), floor(x.z));
         // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.round.html#Unity_Mathematics_math_round_Unity_Mathematics_float3_
-        public static float3 round(float3 x) => new float3(round(x.x), round(x.y), round(x.z));
-        public static float csum(float3 x) => x.x + x.y + x.z;
-        public static float cmax(float3 x) => max(max(x.x, x.y), x.z);
-        public static float cmin(float3 x) => min(min(x.x, x.y), x.z);
-        public static bool3 isfinite(float3 x) => new bool3(isfinite(x.x), isfinite(x.y), isfinite(x.z));
-        public static bool3 isnan(float3 x) => new bool3(isnan(x.x), isnan(x.y), isnan(x.z));
-        public static int3 int3(float3 v) => new int3((int)v.x, (int)v.y, (int)v.z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 round(float3 x) => new float3(round(x.x), round(x.y), round(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float csum(float3 x) => x.x + x.y + x.z;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float cmax(float3 x) => max(max(x.x, x.y), x.z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float cmin(float3 x) => min(min(x.x, x.y), x.z);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool3 isfinite(float3 x) => new bool3(isfinite(x.x), isfinite(x.y), isfinite(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool3 isnan(float3 x) => new bool3(isnan(x.x), isnan(x.y), isnan(x.z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static int3 int3(float3 v) => new int3((int)v.x, (int)v.y, (int)v.z);
 
         // ---- float4
-        public static float dot(float4 a, float4 b) => a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
-        public static float length(float4 x) => sqrt(dot(x, x));
-        public static float lengthsq(float4 x) => dot(x, x);
-        public static float4 normalize(float4 x) => rsqrt(dot(x, x)) * x;
-        public static float4 select(float4 a, float4 b, bool c) => c ? b : a;
-        public static float4 abs(float4 x) => new float4(abs(x.x), abs(x.y), abs(x.z), abs(x.w));
-        public static bool4 isfinite(float4 x) => new bool4(isfinite(x.x), isfinite(x.y), isfinite(x.z), isfinite(x.w));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float dot(float4 a, float4 b) => a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float length(float4 x) => sqrt(dot(x, x));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float lengthsq(float4 x) => dot(x, x);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float4 normalize(float4 x) => rsqrt(dot(x, x)) * x;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float4 select(float4 a, float4 b, bool c) => c ? b : a;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float4 abs(float4 x) => new float4(abs(x.x), abs(x.y), abs(x.z), abs(x.w));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static bool4 isfinite(float4 x) => new bool4(isfinite(x.x), isfinite(x.y), isfinite(x.z), isfinite(x.w));
 
         // ---- float3x3
-        public static float3 mul(float3x3 a, float3 b) => a.c0 * b.x + a.c1 * b.y + a.c2 * b.z;
-        public static float3x3 mul(float3x3 a, float3x3 b) => new float3x3(mul(a, b.c0), mul(a, b.c1), mul(a, b.c2));
-        public static float3x3 transpose(float3x3 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 mul(float3x3 a, float3 b) => a.c0 * b.x + a.c1 * b.y + a.c2 * b.z;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 mul(float3x3 a, float3x3 b) => new float3x3(mul(a, b.c0), mul(a, b.c1), mul(a, b.c2));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 transpose(float3x3 v) =>
             new float3x3(v.c0.x, v.c0.y, v.c0.z, v.c1.x, v.c1.y, v.c1.z, v.c2.x, v.c2.y, v.c2.z);
-        public static float determinant(float3x3 m)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float determinant(float3x3 m)
         {
             float3 c0 = m.c0, c1 = m.c1, c2 = m.c2;
             float m00 = c1.y * c2.z - c1.z * c2.y;
@@ -130,7 +132,7 @@ namespace Unity.Mathematics
             float m02 = c0.y * c1.z - c0.z * c1.y;
             return c0.x * m00 - c1.x * m01 + c2.x * m02;
         }
-        public static float3x3 inverse(float3x3 m)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3x3 inverse(float3x3 m)
         {
             float3 c0 = m.c0, c1 = m.c1, c2 = m.c2;
             float3 t0 = new float3(c1.x, c2.x, c0.x), t1 = new float3(c1.y, c2.y, c0.y), t2 = new float3(c1.z, c2.z, c0.z);
@@ -142,18 +144,18 @@ namespace Unity.Mathematics
         }
 
         // ---- quaternion
-        public static float dot(quaternion a, quaternion b) => dot(a.value, b.value);
-        public static float length(quaternion q) => sqrt(dot(q.value, q.value));
-        public static float lengthsq(quaternion q) => dot(q.value, q.value);
-        public static quaternion normalize(quaternion q) => new quaternion(rsqrt(dot(q.value, q.value)) * q.value);
-        public static quaternion normalizesafe(quaternion q)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float dot(quaternion a, quaternion b) => dot(a.value, b.value);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float length(quaternion q) => sqrt(dot(q.value, q.value));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float lengthsq(quaternion q) => dot(q.value, q.value);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion normalize(quaternion q) => new quaternion(rsqrt(dot(q.value, q.value)) * q.value);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion normalizesafe(quaternion q)
         {
             float len = dot(q.value, q.value);
             return new quaternion(select(Mathematics.quaternion.identity.value, q.value * rsqrt(len), len > FLT_MIN_NORMAL));
         }
-        public static quaternion conjugate(quaternion q) => new quaternion(-q.value.x, -q.value.y, -q.value.z, q.value.w);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion conjugate(quaternion q) => new quaternion(-q.value.x, -q.value.y, -q.value.z, q.value.w);
         /// <summary>rcp(|q|²)·q, then the vector part negated (Unity's order of operations).</summary>
-        public static quaternion inverse(quaternion q)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion inverse(quaternion q)
         {
             float4 x = q.value;
             return new quaternion(rcp(dot(x, x)) * x * new float4(-1.0f, -1.0f, -1.0f, 1.0f));
@@ -162,7 +164,7 @@ namespace Unity.Mathematics
         /// Hamilton product a·b (apply b, then a), evaluated as Unity does:
         /// a.wwww·b + (a.xyzx·b.wwwx + a.yzxy·b.zxyy)·(1, 1, 1, −1) − a.zxyz·b.yzxz.
         /// </summary>
-        public static quaternion mul(quaternion a, quaternion b)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static quaternion mul(quaternion a, quaternion b)
         {
             float4 p = a.value, q = b.value;
             float4 wwww = new float4(p.w) * q;
@@ -171,28 +173,28 @@ namespace Unity.Mathematics
             float4 last = new float4(p.z * q.y, p.x * q.z, p.y * q.x, p.z * q.z);
             return new quaternion(wwww + sum * new float4(1.0f, 1.0f, 1.0f, -1.0f) - last);
         }
-        public static float3 rotate(quaternion q, float3 v)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 rotate(quaternion q, float3 v)
         {
             float3 t = 2f * cross(q.value.xyz, v);
             return v + q.value.w * t + cross(q.value.xyz, t);
         }
-        public static float3 mul(quaternion q, float3 v) => rotate(q, v);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static float3 mul(quaternion q, float3 v) => rotate(q, v);
 
         // ---- hashes (what GetHashCode returns, cast to int): csum(asuint(v) * primes) + prime, wrapping
         // https://docs.unity3d.com/Packages/com.unity.mathematics@1.3/api/Unity.Mathematics.math.hash.html
-        public static uint hash(float2 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(float2 v) =>
             unchecked(asuint(v.x) * 0xFA3A3285u + asuint(v.y) * 0xAD55999Du + 0xDCDD5341u);
-        public static uint hash(float3 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(float3 v) =>
             unchecked(asuint(v.x) * 0x9B13B92Du + asuint(v.y) * 0x4ABF0813u + asuint(v.z) * 0x86068063u + 0xD75513F9u);
-        public static uint hash(float4 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(float4 v) =>
             unchecked(asuint(v.x) * 0xE69626FFu + asuint(v.y) * 0xBD010EEBu + asuint(v.z) * 0x9CEDE1D1u + asuint(v.w) * 0x43BE0B51u + 0xAF836EE1u);
-        public static uint hash(int3 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(int3 v) =>
             unchecked((uint)v.x * 0x4C7F6DD1u + (uint)v.y * 0x4822A3E9u + (uint)v.z * 0xAAC3C25Du + 0xD21D0945u);
-        public static uint hash(float3x3 v) =>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(float3x3 v) =>
             unchecked(asuint(v.c0.x) * 0x713BD06Fu + asuint(v.c1.x) * 0xB5D0BF63u + asuint(v.c2.x) * 0x56A1530Du
                       + asuint(v.c0.y) * 0x753AD6ADu + asuint(v.c1.y) * 0xF9102C5Fu + asuint(v.c2.y) * 0x804B722Du
                       + asuint(v.c0.z) * 0xD19764C7u + asuint(v.c1.z) * 0x9881FB9Fu + asuint(v.c2.z) * 0x738E50E5u
                       + 0x4FC93C25u);
-        public static uint hash(quaternion q) => hash(q.value);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] public static uint hash(quaternion q) => hash(q.value);
     }
 }
