@@ -144,6 +144,8 @@ bool Sweep(Shape s, float3 from, float3 to, float radius, out float3 entry, out 
         float inv = 1.0 / d[axis];
         float t0 = (-extent[axis] - a[axis]) * inv, t1 = (extent[axis] - a[axis]) * inv;
         if (t0 > t1) { float t = t0; t0 = t1; t1 = t; }
+        // A start on the entry plane to round-off enters at t = 0 (ParticleCollision.SweepTolerance).
+        if (t0 < 0.0 && t0 * abs(d[axis]) > -1e-6 * max(abs(a[axis]), extent[axis])) t0 = 0.0;
         if (t0 > latestEntry) { latestEntry = t0; enterAxis = axis; }
         tExit = min(tExit, t1);
     }

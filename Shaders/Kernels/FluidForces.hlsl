@@ -22,8 +22,58 @@ void SurfaceNormals(uint3 id : SV_DispatchThreadID)
     _VectorsB[i] = float4(SmoothingLength * n, 0.0);
 }
 
+// FluidPasses.MirroredPressure, one wall: the tangential part of the pressure term from i's neighbours mirrored through a
+// plane at distance d (unit normal n into the fluid), the ghost of j carrying pⱼ; before the factor −m·C_spiky·κ∇.
+float3 MirroredPressure(uint i, float3 xi, float pi, float3 n, float d)
+{
+    float H = SmoothingLength;
+    d = max(d, 0.0);
+    float3 sum = float3(0.0, 0.0, 0.0);
+    uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
+    for (uint m = 0; m < count; m++)
+    {
+        uint j = _Neighbours[list + m];
+        float3 rij = PairOffset(xi, _Positions[j].xyz);
+        float along = -dot(rij, n);
+        float t = d + along;
+        if (!(t > 0.0)) continue;
+        float3 tangential = rij + along * n;
+        float normal = d + t;
+        float r2 = dot(tangential, tangential) + normal * normal;
+        if (!(r2 < H * H)) continue;
+        float r = sqrt(r2);
+        float hr = H - r;
+        sum += ((pi + _Pressures[j]) * hr * hr / r) * tangential;
+    }
+    return sum;
+}
+
+// FluidPasses.MirroredPressure: the domain's faces (none on a periodic axis) and the colliders' tangent planes within h.
+float3 MirroredPressures(uint i, float3 xi, float pi)
+{
+    float H = SmoothingLength;
+    float3 sum = float3(0.0, 0.0, 0.0);
+    [unroll] for (int a = 0; a < 3; a++)
+    {
+        if (Period[a] > 0.0) continue;
+        float below = xi[a] - DomainMin[a], above = DomainMax[a] - xi[a];
+        float3 axis = float3(0.0, 0.0, 0.0);
+        axis[a] = 1.0;
+        if (below < H) sum += MirroredPressure(i, xi, pi, axis, below);
+        if (above < H) sum += MirroredPressure(i, xi, pi, -axis, above);
+    }
+    for (uint c = 0; c < ColliderCount; c++)
+    {
+        // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+        float3 normal; float depth; bool deep;
+        if (Penetration(LoadShape(c), xi, H, normal, depth, deep))
+            sum += MirroredPressure(i, xi, pi, normal, H - depth);
+    }
+    return sum;
+}
+
 // Weakly compressible: gravity, the symmetric pressure term with Monaghan's artificial viscosity (Müller 2003, eq. 10;
-// Becker & Teschner 2007, eq. 11) and the walls' push (Akinci 2012, eq. 9); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
+// Becker & Teschner 2007, eq. 11), the walls' push (Akinci 2012, eq. 9) and their ghosts' tangential share (MirroredPressures); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
 float4 Acceleration(uint i, bool pressureAndGravity)
 {
     float h = SubstepSeconds, H = SmoothingLength, H2 = SmoothingLengthSquared;
@@ -56,6 +106,7 @@ float4 Acceleration(uint i, bool pressureAndGravity)
             else
                 sum += scale * H2 * CoincidentDirection(idI, (int)_Extras[j].y);
         }
+        sum += MirroredPressures(i, xi, pi);
         sum *= -m * SpikyGradientCoefficient * GradientCorrection;
         float wall, trace; float3 push;
         SampleWalls(xi, wall, push, trace);

@@ -46,6 +46,9 @@ namespace SoftBodyDynamics.Solvers
             }
         }
 
+        /// <summary>Relative distance (of the larger of the start's coordinate and the slab's half-width) within which a start on a box face counts as on it, not inside (<see cref="Sweep"/>): 8 ulp.</summary>
+        public const float SweepTolerance = 1e-6f;
+
         /// <summary>
         /// Swept test of the motion <paramref name="from"/> → <paramref name="to"/> against a plane or an
         /// inflated box: true when the segment enters the solid, with the entry point and face normal.
@@ -87,6 +90,10 @@ namespace SoftBodyDynamics.Solvers
                 float inv = 1f / d[axis];
                 float t0 = (-extent[axis] - a[axis]) * inv, t1 = (extent[axis] - a[axis]) * inv;
                 if (t0 > t1) { float t = t0; t0 = t1; t1 = t; }
+                // A start on the entry plane to round-off (where the last substep's projection left a particle) enters at
+                // t = 0: the same answer whether the rotation rounded it a few ulp inside or outside.
+                if (t0 < 0f && t0 * math.abs(d[axis]) > -SweepTolerance * math.max(math.abs(a[axis]), extent[axis]))
+                    t0 = 0f;
                 if (t0 > latestEntry) { latestEntry = t0; enterAxis = axis; }
                 tExit = math.min(tExit, t1);
             }

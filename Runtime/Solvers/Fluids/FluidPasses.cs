@@ -237,7 +237,8 @@ namespace SoftBodyDynamics.Solvers
         /// term −Σⱼ m·(κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992;
         /// κ the per-particle renormalization stored with the pressure)
         /// with Monaghan's artificial viscosity Πᵢⱼ (Becker &amp; Teschner 2007, eq. 11) and the walls'
-        /// ρ₀·(κᵢpᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous). Both solvers add the cohesion of
+        /// ρ₀·(κᵢpᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous) with their mirrored neighbours' tangential share
+        /// (<see cref="MirroredPressure{TOffset}(in FluidConstants, ReadOnlySpan{ColliderShape}, ReadOnlySpan{float3}, ReadOnlySpan{float}, ReadOnlySpan{int}, float3, float, TOffset)"/>). Both solvers add the cohesion of
         /// <see cref="FluidParameters.Cohesion"/>. Writes vᵢ + h·aᵢ to <paramref name="destination"/> (neighbours'
         /// velocities are read). Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
         /// </summary>
@@ -309,9 +310,70 @@ namespace SoftBodyDynamics.Solvers
                     // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
                     sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
             }
+            sum += MirroredPressure(c, colliders, x, pressures, list, xi, pi, offset);
             sum *= -c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
             FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
             return prm.Gravity + sum + prm.RestDensity * pi * push;
+        }
+
+        /// <summary>
+        /// The tangential part of the pressure term from the neighbours mirrored through each wall within h, the domain's
+        /// faces and the colliders' tangent planes (ghost fluid, Colagrossi &amp; Landrini 2003): the ghost of j at normal
+        /// distance d + tⱼ from i (tⱼ = d + (xⱼ − xᵢ)·n &gt; 0, d = i's distance to the wall) carries pⱼ, so
+        /// Σ_g (κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²)·(h − r)²/r·r_t with r_t the tangential part of rᵢⱼ. The walls' push
+        /// (<see cref="FluidBoundary"/>) holds the normal part; this holds the pressure gradient along the wall that the
+        /// missing neighbours would carry, so a column's weight is not left to the particles away from the walls. In
+        /// <see cref="PressureAcceleration"/>'s units, before its factor −m·C_spiky·κ∇.
+        /// </summary>
+        static float3 MirroredPressure<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<float3> x,
+            ReadOnlySpan<float> pressures, ReadOnlySpan<int> list, float3 xi, float pi, TOffset offset) where TOffset : struct, IPairOffset
+        {
+            float hk = c.Kernels.H;
+            float3 below = xi - c.Parameters.DomainMin, above = c.Parameters.DomainMax - xi;
+            float3 sum = float3.zero;
+            for (int a = 0; a < 3; a++)
+            {
+                // A periodic axis has no faces.
+                if (c.Period[a] > 0f)
+                    continue;
+                float3 axis = float3.zero;
+                axis[a] = 1f;
+                if (below[a] < hk)
+                    sum += MirroredPressure(x, pressures, list, xi, pi, axis, below[a], hk, offset);
+                if (above[a] < hk)
+                    sum += MirroredPressure(x, pressures, list, xi, pi, -axis, above[a], hk, offset);
+            }
+            for (int w = 0; w < colliders.Length; w++)
+                // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+                if (ParticleCollision.Penetration(colliders[w], xi, hk, out float3 normal, out float depth))
+                    sum += MirroredPressure(x, pressures, list, xi, pi, normal, hk - depth, hk, offset);
+            return sum;
+        }
+
+        /// <summary>One wall of <see cref="MirroredPressure{TOffset}(in FluidConstants, ReadOnlySpan{ColliderShape}, ReadOnlySpan{float3}, ReadOnlySpan{float}, ReadOnlySpan{int}, float3, float, TOffset)"/>: unit normal n into the fluid at distance d.</summary>
+        static float3 MirroredPressure<TOffset>(ReadOnlySpan<float3> x, ReadOnlySpan<float> pressures, ReadOnlySpan<int> list,
+            float3 xi, float pi, float3 n, float d, float h, TOffset offset) where TOffset : struct, IPairOffset
+        {
+            d = math.max(d, 0f);
+            float3 sum = float3.zero;
+            for (int m = 0; m < list.Length; m++)
+            {
+                int j = list[m];
+                float3 rij = offset.Of(xi, x[j]);
+                float along = -math.dot(rij, n);
+                float t = d + along;
+                if (!(t > 0f))
+                    continue;
+                float3 tangential = rij + along * n;
+                float normal = d + t;
+                float r2 = math.lengthsq(tangential) + normal * normal;
+                if (!(r2 < h * h))
+                    continue;
+                float r = math.sqrt(r2);
+                float hr = h - r;
+                sum += ((pi + pressures[j]) * hr * hr / r) * tangential;
+            }
+            return sum;
         }
 
         /// <summary>Flocking part of <see cref="Forces"/>: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.</summary>

@@ -123,5 +123,55 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.Greater(n, 100);
             Assert.That(worst, Is.LessThan(1e-4));
         }
+
+        [Test]
+        public void LinearPressureAlongAWall_GivesTheInteriorsGradient()
+        {
+            // A rest lattice half a spacing off two walls (x), periodic along z, with p = p₀ + G·y and no gravity: the first layer's
+            // neighbours mirrored through the wall are exactly the lattice's continuation, so with the ghosts' share of the
+            // pressure term (FluidPasses.MirroredPressure) it gets the interior's ρᵢ·aᵢ = −G·ŷ up to its neighbours' κⱼ: the
+            // second layer's follows the continuum-shaped wall trace, 0.5 % off (the first test), and holds under half of the
+            // first layer's moment, so bound 0.3 %. Without the ghosts the first layer fell 15 % short. Deeper layers carry
+            // their own κᵢ's 0.5 %: bound 1 %.
+            float dx = 0.02f;
+            var size = new float3(0.2f, 0.4f, 0.12f);
+            FluidParameters p = FluidTestScenes.Water(dx, float3.zero, size);
+            p.Periodic = new bool3(false, false, true);
+            p.Gravity = float3.zero;
+            var c = new FluidConstants(p);
+            FluidBuffers b = FluidTestScenes.Block(c, 2000, float3.zero, size);
+            var counters = new FluidPassCounters();
+            int live = FluidSolver.SortParticles(c, b.Particles, b.Scratch, b.Status.Count, false, ref counters);
+            FluidPasses.Density(c, default, b.Particles, b.Scratch, 0, live, ref counters);
+            const float G = -9810f, p0 = 1000f;
+            for (int i = 0; i < live; i++)
+            {
+                FluidBoundary.Sample(c, default, b.Positions[i], out _, out _, out float wallTrace);
+                float rho = b.Densities[i];
+                float kappa = c.GradientRenormalization((float)SpikySum(c, b, i, live), rho, wallTrace);
+                b.Scratch.Pressures[i] = kappa * (p0 + G * b.Positions[i].y) / (rho * rho);
+            }
+            var acceleration = new float3[live];
+            FluidPasses.Forces(c, default, b.Particles, b.Scratch, acceleration, 0, live, 1f, true);
+            double firstLayer = 0, deeper = 0;
+            int n = 0;
+            for (int i = 0; i < live; i++)
+            {
+                float3 x = b.Positions[i];
+                if (x.y < 2f * c.Kernels.H || x.y > size.y - 2f * c.Kernels.H)
+                    continue;
+                double error = Math.Abs(b.Densities[i] * acceleration[i].y / -G - 1);
+                if (math.min(x.x, size.x - x.x) < dx)
+                {
+                    firstLayer = Math.Max(firstLayer, error);
+                    n++;
+                }
+                else
+                    deeper = Math.Max(deeper, error);
+            }
+            Assert.Greater(n, 50);
+            Assert.That(firstLayer, Is.LessThan(0.003), "the layer half a spacing off the wall");
+            Assert.That(deeper, Is.LessThan(0.01), "deeper layers");
+        }
     }
 }
