@@ -6,18 +6,20 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
     /// <summary>
-    /// Hydrostatic column: a 0.3 × 0.4 × 0.3 m block of water (Δx = 2.5 cm, h = 5 cm, 2304 particles) released at rest in a
-    /// box of the same footprint. Setup runs it for the settle time (10 s in the full run) in 1/60 s frames and
+    /// Hydrostatic column: a 0.3 × 0.4 × 0.3 m block of water (Δx = 2.5 cm, h = 5 cm, 2304 particles; or a finer spacing)
+    /// released at rest in a box of the same footprint. Setup runs it for the settle time (10 s in the full run) in 1/60 s frames and
     /// measures: the interior pressure's L2 error against ρ₀·g·(H − y) and the error against −ρ₀g of its least-squares
     /// gradient averaged over the last second's 60 frames (one frame's fit moves by several per cent with the particles'
-    /// slow rearrangement and acoustic noise), where the last frame's line reaches zero and the particles' scatter about it (interior = at least two kernel radii 2h from the walls, the floor and the surface, where the kernel's
+    /// slow rearrangement and acoustic noise) and against −ρ̄g with ρ̄ the interior's mean density (the weakly compressible
+    /// fluid's own analytic gradient, dp/dy = −ρ(p)·g), where the last frame's line reaches zero and the particles' scatter about it (interior = at least two kernel radii 2h from the walls, the floor and the surface, where the kernel's
     /// deficiency is expected: 128 particles; weakly compressible only, position-based fluids have no pressure), the mean interior
     /// density error, the kinetic energy per particle mass and how far the surface moved over the last 90 % of the
     /// run. Each timed Step is one more 1/60 s frame of the settled column; an item is one particle-substep.
     /// </summary>
     public sealed class HydrostaticColumnScenario : IScenario
     {
-        const float k_Spacing = 0.025f;
+        /// <summary>Default particle spacing Δx (m).</summary>
+        public const float DefaultSpacing = 0.025f;
         const float k_Frame = 1f / 60f;
         /// <summary>Frames over which the pressure gradient is averaged: the last second.</summary>
         const int k_AveragedFrames = 60;
@@ -26,15 +28,17 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly FluidParameters m_Parameters;
         readonly string m_Setting;
         readonly float m_SettleSeconds;
+        readonly float m_Spacing;
         FluidConstants m_Constants;
         FluidBuffers m_Buffers;
         long m_Items;
         int m_Initial;
-        double m_PressureError, m_GradientError, m_DensityError, m_Kinetic, m_Drift, m_SurfaceOffset, m_PressureScatter;
+        double m_PressureError, m_GradientError, m_DensityError, m_Kinetic, m_Drift, m_SurfaceOffset, m_PressureScatter, m_OwnDensityGradientError;
         int m_Interior;
 
-        public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds)
+        public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds, float spacing = DefaultSpacing)
         {
+            m_Spacing = spacing;
             m_Parameters = parameters;
             m_Setting = setting;
             m_SettleSeconds = settleSeconds;
@@ -42,7 +46,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public string Name => "HydrostaticColumn";
         public string Method => $"{DamBreakScenario.SolverName(m_Parameters.Solver)} {m_Setting}, {m_SettleSeconds:0.#} s";
-        public int Size => m_Initial > 0 ? m_Initial : FluidScene.BlockCount(float3.zero, s_Block, k_Spacing);
+        public int Size => m_Initial > 0 ? m_Initial : FluidScene.BlockCount(float3.zero, s_Block, m_Spacing);
         public string SizeUnit => "particles";
         public long ItemsPerStep => Math.Max(1, m_Items);
 
@@ -51,20 +55,24 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            m_Buffers = FluidScene.BlockInBox(m_Parameters, k_Spacing, new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z), s_Block, out m_Constants);
+            m_Buffers = FluidScene.BlockInBox(m_Parameters, m_Spacing, new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z), s_Block, out m_Constants);
             m_Initial = m_Buffers.Status.Count;
             int frames = (int)Math.Round(m_SettleSeconds / k_Frame);
             int averaged = Math.Min(k_AveragedFrames, frames);
-            double early = double.NaN, slopes = 0;
+            double early = double.NaN, slopes = 0, ownSlopes = 0;
             for (int f = 0; f < frames; f++)
             {
                 Frame();
                 if (f == frames / 10)
                     early = Surface();
                 if (f >= frames - averaged)
-                    slopes += Fit(Surface()).Slope;
+                {
+                    var fit = Fit(Surface());
+                    slopes += fit.Slope;
+                    ownSlopes += fit.Slope / fit.Density;
+                }
             }
-            Measure(early, slopes / averaged);
+            Measure(early, slopes / averaged, ownSlopes / averaged);
         }
 
         FluidStepReport Frame()
@@ -81,14 +89,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int i = 0; i < m_Buffers.Status.Count; i++)
                 if (m_Buffers.NeighbourCounts[i] >= 4)
                     top = Math.Max(top, m_Buffers.Positions[i].y);
-            return top + 0.5 * k_Spacing;
+            return top + 0.5 * m_Spacing;
         }
 
-        /// <summary>The least-squares line p = intercept + slope·y of the interior particles' pressures, and their count.</summary>
-        (double Intercept, double Slope, int Count) Fit(double surface)
+        /// <summary>The least-squares line p = intercept + slope·y of the interior particles' pressures, their count and mean density.</summary>
+        (double Intercept, double Slope, int Count, double Density) Fit(double surface)
         {
             FluidBuffers b = m_Buffers;
-            double border = 2 * m_Constants.Kernels.H, sy = 0, sp = 0, syy = 0, syp = 0;
+            double border = 2 * m_Constants.Kernels.H, sy = 0, sp = 0, syy = 0, syp = 0, density = 0;
             int n = 0;
             for (int i = 0; i < b.Status.Count; i++)
             {
@@ -101,13 +109,14 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 sp += pressure;
                 syy += (double)x.y * x.y;
                 syp += x.y * pressure;
+                density += b.Densities[i];
             }
             double denominator = n * syy - sy * sy;
             double slope = n > 2 && denominator > 0 ? (n * syp - sy * sp) / denominator : double.NaN;
-            return (n > 0 ? (sp - slope * sy) / n : double.NaN, slope, n);
+            return (n > 0 ? (sp - slope * sy) / n : double.NaN, slope, n, n > 0 ? density / n : double.NaN);
         }
 
-        void Measure(double early, double meanSlope)
+        void Measure(double early, double meanSlope, double meanSlopePerDensity)
         {
             FluidBuffers b = m_Buffers;
             double H = Surface();
@@ -125,12 +134,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 pErr += (pressure - reference) * (pressure - reference);
                 pRef += reference * reference;
             }
-            var (intercept, slope, interior) = Fit(H);
+            var (intercept, slope, interior, _) = Fit(H);
             bool tait = m_Constants.Parameters.Solver == FluidSolverKind.WeaklyCompressible;
             m_PressureError = tait && pRef > 0 ? Math.Sqrt(pErr / pRef) : double.NaN;
             // The slope dp/dy against the hydrostatic −ρ₀g is independent of where the surface is taken to be (the kernel's
             // deficiency there shifts p by a constant, not its gradient).
             m_GradientError = tait ? Math.Abs(meanSlope / (-rho0 * g) - 1) : double.NaN;
+            m_OwnDensityGradientError = tait ? Math.Abs(meanSlopePerDensity / -g - 1) : double.NaN;
             // Where the last frame's fitted line reaches p = 0, below the particle surface H: the layer the kernel's
             // deficiency leaves without pressure (the density is clamped at ρ₀ there).
             m_SurfaceOffset = tait && slope < 0 ? H + intercept / slope : double.NaN;
@@ -162,6 +172,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         {
             new Metric("pressure L2 error", m_PressureError, MetricUnit.Fraction),
             new Metric("pressure gradient error", m_GradientError, MetricUnit.Fraction),
+            new Metric("pressure gradient error (own density)", m_OwnDensityGradientError, MetricUnit.Fraction),
             new Metric("zero-pressure depth", 1000 * m_SurfaceOffset, MetricUnit.Millimetre),
             new Metric("pressure scatter", m_PressureScatter, MetricUnit.Fraction),
             new Metric("density error", m_DensityError, MetricUnit.Fraction),
