@@ -47,7 +47,7 @@ namespace SoftBodyDynamics.Authoring
         [Min(0f)]
         public float speedOfSound = 10f;
 
-        [Tooltip("Weakly compressible: artificial viscosity α (0–1) damping acoustic noise. Default 0.05.")]
+        [Tooltip("Weakly compressible: artificial viscosity α (0–1) damping acoustic noise, used only as far as the physical viscosity falls short of its own α·h·c₀/10 (honey, slime and lava get none). Default 0.05.")]
         [Range(0f, 1f)]
         public float artificialViscosity = 0.05f;
 

@@ -234,7 +234,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 r2 += math.lengthsq(b.Positions[i] - centre);
             double gyration = Math.Sqrt(5.0 / 3.0 * (r2 / count + prm.ParticleSpacing * prm.ParticleSpacing / 4.0));
             double deep = gyration - margin * k.H;
-            float alphaCh = 2f * prm.ArtificialViscosity * prm.SpeedOfSound * k.H, eta2 = 0.01f * k.H2;
+            float alphaCh = 2f * c.EffectiveArtificialViscosity * prm.SpeedOfSound * k.H, eta2 = 0.01f * k.H2;
             double volume = 0, eos = 0, pressureVirial = 0, cohesionVirial = 0, kinetic = 0;
             int interior = 0;
             for (int i = 0; i < count; i++)

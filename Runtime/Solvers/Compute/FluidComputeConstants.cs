@@ -135,7 +135,7 @@ namespace SoftBodyDynamics.Solvers
                 MaxDensityRatio = p.MaxDensityRatio,
                 SubstepSeconds = h,
                 MaxSpeed = p.MaxSpeed,
-                ArtificialViscosity = 2f * p.ArtificialViscosity * p.SpeedOfSound * k.H,
+                ArtificialViscosity = 2f * c.EffectiveArtificialViscosity * p.SpeedOfSound * k.H,
                 Relaxation = c.Relaxation,
                 CohesionWeight = p.CohesionWeight,
                 SeparationWeight = p.SeparationWeight,

@@ -88,6 +88,13 @@ namespace SoftBodyDynamics.Solvers
         public readonly float3 FaceNoSlip;
         /// <summary>Position-based: constraint-force mixing ε added to the gradient sum (1/m²), 1e-3/Δx², about 1 % of the sum at rest.</summary>
         public readonly float Relaxation;
+        /// <summary>
+        /// Weakly compressible: the artificial viscosity α' the pressure term uses, <see cref="FluidParameters.ArtificialViscosity"/>
+        /// α less what the physical viscosity ν already supplies: α' = α·max(0, 1 − ν/ν_α) with ν_α = α·h·c₀/10, α's shear
+        /// viscosity, so that ν + α'·h·c₀/10 ≥ ν_α. A material whose own viscosity damps the acoustic noise (honey, slime,
+        /// lava at game spacings) gets none; water keeps α.
+        /// </summary>
+        public readonly float EffectiveArtificialViscosity;
 
         public FluidConstants(in FluidParameters parameters)
         {
@@ -98,6 +105,10 @@ namespace SoftBodyDynamics.Solvers
             Mass = Parameters.RestDensity / LatticeKernelSum(Kernels, Parameters.ParticleSpacing);
             TaitStiffness = Parameters.RestDensity * Parameters.SpeedOfSound * Parameters.SpeedOfSound / FluidParameters.TaitExponent;
             WallDistance = 0.5f * Parameters.ParticleSpacing;
+            float artificialShear = Parameters.ArtificialViscosity * h * Parameters.SpeedOfSound / 10f;
+            EffectiveArtificialViscosity = artificialShear > 0f
+                ? Parameters.ArtificialViscosity * math.max(0f, 1f - Parameters.Viscosity / artificialShear)
+                : 0f;
             float continuum = Kernels.WallDensityFraction(WallDistance);
             WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));

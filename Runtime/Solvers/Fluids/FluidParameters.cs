@@ -26,7 +26,8 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Weakly compressible: Monaghan's artificial viscosity α (dimensionless, Becker &amp; Teschner 2007, eq. 11),
         /// acting only between approaching particles. It damps the acoustic noise of the stiff equation of state; it
-        /// also adds an effective viscosity of about α·h·c₀/10 (m²/s). 0–1, default 0.05.
+        /// also adds an effective viscosity of about α·h·c₀/10 (m²/s). The step uses it only as far as <see cref="Viscosity"/>
+        /// falls short of that (<see cref="FluidConstants.EffectiveArtificialViscosity"/>). 0–1, default 0.05.
         /// </summary>
         public float ArtificialViscosity;
         /// <summary>

@@ -279,7 +279,7 @@ namespace SoftBodyDynamics.Solvers
         {
             SphKernels k = c.Kernels;
             FluidParameters prm = c.Parameters;
-            float alphaCh = 2f * prm.ArtificialViscosity * prm.SpeedOfSound * k.H;
+            float alphaCh = 2f * c.EffectiveArtificialViscosity * prm.SpeedOfSound * k.H;
             float eta2 = 0.01f * k.H2;
             float minDistance = 1e-6f * k.H;
             ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;

@@ -159,6 +159,49 @@ namespace SoftBodyDynamics.Tests.Solvers
         }
 
         [Test]
+        public void ArtificialViscosity_IsOnlyWhatThePhysicalViscosityLacks()
+        {
+            // α' = α·max(0, 1 − ν/ν_α), ν_α = α·h·c₀/10 = 0.05 × 0.04 m × 10 m/s / 10 = 2e-3 m²/s at Δx = 2 cm: water keeps
+            // nearly all of α, oil 95.6 % of it, a fluid at ν_α or above none (float32 round-off of a few operations: 1e-6).
+            foreach (var (kind, expected) in new[] { (FluidPresetKind.Water, 0.05 * (1 - 1e-6 / 2e-3)), (FluidPresetKind.Oil, 0.05 * (1 - 8.8e-5 / 2e-3)),
+                         (FluidPresetKind.Honey, 0.0), (FluidPresetKind.Slime, 0.0), (FluidPresetKind.Lava, 0.0) })
+            {
+                FluidParameters p = FluidPresets.Get(kind).Parameters;
+                p.ParticleSpacing = 0.02f;
+                Assert.That(new FluidConstants(p).EffectiveArtificialViscosity, Is.EqualTo(expected).Within(1e-6), kind.ToString());
+            }
+            FluidParameters atThreshold = FluidTestScenes.Water(0.02f, float3.zero, new float3(1f));
+            atThreshold.Viscosity = 2e-3f;
+            Assert.That(new FluidConstants(atThreshold).EffectiveArtificialViscosity, Is.LessThan(1e-6f));
+        }
+
+        [Test]
+        public void HoneyColumn_RestsOnItsOwnViscosity()
+        {
+            // The honey preset's ν = 7e-3 m²/s is 3.5 times the artificial viscosity's 2e-3, so it runs with none: the 0.4 m
+            // column of DeepColumnAtDefaults still rests to 1e-5 J/kg over its fourth second (measured 2.1e-6).
+            FluidParameters p = FluidPresets.Get(FluidPresetKind.Honey).Parameters;
+            p.ParticleSpacing = 0.02f;
+            p.DomainMin = float3.zero;
+            p.DomainMax = new float3(0.12f, 0.6f, 0.12f);
+            var c = new FluidConstants(p);
+            Assert.That(c.EffectiveArtificialViscosity, Is.EqualTo(0f));
+            FluidBuffers b = FluidTestScenes.Block(c, 720, float3.zero, new float3(0.12f, 0.4f, 0.12f));
+            double mean = 0;
+            for (int f = 1; f <= 240; f++)
+            {
+                FluidTestScenes.Step(c, b, 1f / 60f);
+                if (f < 180 || f % 15 != 0)
+                    continue;
+                double ke = 0;
+                for (int i = 0; i < b.Status.Count; i++)
+                    ke += 0.5 * math.lengthsq(b.Velocities[i]);
+                mean += ke / b.Status.Count / 5;
+            }
+            Assert.That(mean, Is.LessThan(1e-5));
+        }
+
+        [Test]
         public void DeepColumnAtDefaults_RestsOverItsFourthSecond()
         {
             // 0.12 × 0.4 × 0.12 m released on a lattice at ρ₀ (720 particles, defaults: c₀ = 10 m/s, Δx = 2 cm). Gravity
