@@ -26,6 +26,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static readonly int[] Iterations = { 2, 4, 8 };
         /// <summary>Position-based iteration counts of the hydrostatic rows (full run): the default, and enough for the 16-layer column to come to rest at one substep per 1/60 s frame.</summary>
         public static readonly int[] HydrostaticIterations = { 4, 16 };
+        /// <summary>Columns of the default row's ensemble in the default run (8 in the full run; <see cref="HydrostaticColumnScenario"/>).</summary>
+        public const int HydrostaticMembers = 4;
         /// <summary>Finest dam-break resolution of the default run, where only the cheapest setting of each solver runs (a run there takes 5–25 s).</summary>
         public const int StandardFinestResolution = 20;
         /// <summary>
@@ -99,7 +101,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 }
             }
             float settle = quick ? 0.5f : SettleSeconds;
-            yield return new HydrostaticColumnScenario(Weak(FluidParameters.Default.SpeedOfSound), "c0 = 10 m/s (default)", settle);
+            yield return new HydrostaticColumnScenario(Weak(FluidParameters.Default.SpeedOfSound), "c0 = 10 m/s (default)", settle,
+                members: quick ? 1 : scope == RunScope.Full ? 8 : HydrostaticMembers);
             if (scope == RunScope.Full)
             {
                 // Half the spacing: the gradient against the fluid's own density falls with resolution.
@@ -287,13 +290,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     continue;
                 if (!header)
                 {
-                    md.AppendLine("| Hydrostatic column | pressure gradient error (ρ₀g) | against its own density (ρ̄g) | pressure L2 error | scatter about the fitted line | depth of p = 0 below the surface (mm) | density error | kinetic energy (J/kg) | surface drift (mm) | lost |");
+                    md.AppendLine("| Hydrostatic column | pressure gradient error (ρ₀g), mean ± SD | against its own density (ρ̄g) | pressure L2 error | scatter about the fitted line | depth of p = 0 below the surface (mm) | density error | kinetic energy (J/kg) | surface drift (mm) | lost |");
                     md.AppendLine("|---|---|---|---|---|---|---|---|---|---|");
                     header = true;
                 }
                 double depth = r.Value("zero-pressure depth");
-                md.AppendLine(F("| {0} | {1} | {2} | {3} | {4} | {5} | {6:0.00} % | {7:0.0e+0} | {8:0.0} | {9:0} |", r.Method, Percent(r.Value("pressure gradient error")),
-                    Percent(r.Value("pressure gradient error (own density)")), Percent(r.Value("pressure L2 error")), Percent(r.Value("pressure scatter")), double.IsNaN(depth) ? "–" : F("{0:0}", depth),
+                md.AppendLine(F("| {0} | {1} | {2} | {3} | {4} | {5} | {6:0.00} % | {7:0.0e+0} | {8:0.0} | {9:0} |", Members(r),
+                    WithSpread(r, "pressure gradient error"), WithSpread(r, "pressure gradient error (own density)"), Percent(r.Value("pressure L2 error")), Percent(r.Value("pressure scatter")), double.IsNaN(depth) ? "–" : F("{0:0}", depth),
                     100 * r.Value("density error"), r.Value("kinetic energy"), r.Value("surface drift"), r.Value("particles lost")));
             }
             if (header)
@@ -301,6 +304,19 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         static string Percent(double fraction) => double.IsNaN(fraction) ? "–" : F("{0:0.0} %", 100 * fraction);
+
+        /// <summary>A gradient error as "mean ± spread" over the row's ensemble (the mean alone for one column).</summary>
+        static string WithSpread(ScenarioOutcome r, string metric)
+        {
+            double spread = r.Value(metric + " spread");
+            return double.IsNaN(spread) || double.IsNaN(r.Value(metric)) ? Percent(r.Value(metric)) : F("{0} ± {1:0.0}", Percent(r.Value(metric)), 100 * spread);
+        }
+
+        static string Members(ScenarioOutcome r)
+        {
+            double members = r.Value("ensemble members");
+            return members > 1 ? F("{0} ({1:0} columns)", r.Method, members) : r.Method;
+        }
 
         static void DropletSummary(StringBuilder md, IReadOnlyList<ScenarioOutcome> rows)
         {

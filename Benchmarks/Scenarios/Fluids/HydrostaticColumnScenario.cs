@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Threading.Tasks;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -14,7 +15,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// fluid's own analytic gradient, dp/dy = −ρ(p)·g), where the last frame's line reaches zero and the particles' scatter about it (interior = at least two kernel radii 2h from the walls, the floor and the surface, where the kernel's
     /// deficiency is expected: 128 particles; weakly compressible only, position-based fluids have no pressure), the mean interior
     /// density error, the kinetic energy per particle mass and how far the surface moved over the last 90 % of the
-    /// run. Each timed Step is one more 1/60 s frame of the settled column; an item is one particle-substep.
+    /// run. The settled state is chaotic: a change as small as water's ν × 1.01 moves the averaged slope by several per
+    /// cent, so an ensemble of columns whose ν is scaled by 1 + k/100 (k = 0 … members − 1; water's ν is 1/2500 of the
+    /// artificial viscosity's, no physical change) settles in parallel and each metric is the members' mean, the gradient
+    /// errors as the mean of their signed values with its spread (standard deviation over the members). Each timed Step is
+    /// one more 1/60 s frame of the first member; an item is one particle-substep.
     /// </summary>
     public sealed class HydrostaticColumnScenario : IScenario
     {
@@ -29,16 +34,21 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly string m_Setting;
         readonly float m_SettleSeconds;
         readonly float m_Spacing;
+        readonly int m_Members;
+        HydrostaticColumnScenario[] m_Ensemble;
         FluidConstants m_Constants;
         FluidBuffers m_Buffers;
         long m_Items;
         int m_Initial;
-        double m_PressureError, m_GradientError, m_DensityError, m_Kinetic, m_Drift, m_SurfaceOffset, m_PressureScatter, m_OwnDensityGradientError;
+        double m_PressureError, m_DensityError, m_Kinetic, m_Drift, m_SurfaceOffset, m_PressureScatter;
+        /// <summary>Signed errors of the averaged slope against −ρ₀g and −ρ̄g (positive: steeper).</summary>
+        double m_GradientBias, m_OwnDensityGradientBias;
         int m_Interior;
 
-        public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds, float spacing = DefaultSpacing)
+        public HydrostaticColumnScenario(FluidParameters parameters, string setting, float settleSeconds, float spacing = DefaultSpacing, int members = 1)
         {
             m_Spacing = spacing;
+            m_Members = Math.Max(1, members);
             m_Parameters = parameters;
             m_Setting = setting;
             m_SettleSeconds = settleSeconds;
@@ -54,6 +64,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static float ReferenceSpeed => (float)Math.Sqrt(2 * 9.81 * s_Block.y);
 
         public void Setup()
+        {
+            m_Ensemble = new HydrostaticColumnScenario[m_Members];
+            m_Ensemble[0] = this;
+            for (int k = 1; k < m_Members; k++)
+            {
+                FluidParameters p = m_Parameters;
+                p.Viscosity *= 1f + 0.01f * k;
+                m_Ensemble[k] = new HydrostaticColumnScenario(p, m_Setting, m_SettleSeconds, m_Spacing);
+            }
+            Parallel.For(0, m_Members, k => m_Ensemble[k].Settle());
+        }
+
+        /// <summary>Settles this member's column and measures it.</summary>
+        void Settle()
         {
             m_Buffers = FluidScene.BlockInBox(m_Parameters, m_Spacing, new float3(s_Block.x, 1.5f * s_Block.y, s_Block.z), s_Block, out m_Constants);
             m_Initial = m_Buffers.Status.Count;
@@ -139,8 +163,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_PressureError = tait && pRef > 0 ? Math.Sqrt(pErr / pRef) : double.NaN;
             // The slope dp/dy against the hydrostatic −ρ₀g is independent of where the surface is taken to be (the kernel's
             // deficiency there shifts p by a constant, not its gradient).
-            m_GradientError = tait ? Math.Abs(meanSlope / (-rho0 * g) - 1) : double.NaN;
-            m_OwnDensityGradientError = tait ? Math.Abs(meanSlopePerDensity / -g - 1) : double.NaN;
+            m_GradientBias = tait ? meanSlope / (-rho0 * g) - 1 : double.NaN;
+            m_OwnDensityGradientBias = tait ? meanSlopePerDensity / -g - 1 : double.NaN;
             // Where the last frame's fitted line reaches p = 0, below the particle surface H: the layer the kernel's
             // deficiency leaves without pressure (the density is clamped at ρ₀ there).
             m_SurfaceOffset = tait && slope < 0 ? H + intercept / slope : double.NaN;
@@ -168,18 +192,41 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Step() => Frame();
 
-        public IReadOnlyList<Metric> Evaluate() => new[]
+        public IReadOnlyList<Metric> Evaluate()
         {
-            new Metric("pressure L2 error", m_PressureError, MetricUnit.Fraction),
-            new Metric("pressure gradient error", m_GradientError, MetricUnit.Fraction),
-            new Metric("pressure gradient error (own density)", m_OwnDensityGradientError, MetricUnit.Fraction),
-            new Metric("zero-pressure depth", 1000 * m_SurfaceOffset, MetricUnit.Millimetre),
-            new Metric("pressure scatter", m_PressureScatter, MetricUnit.Fraction),
-            new Metric("density error", m_DensityError, MetricUnit.Fraction),
-            new Metric("kinetic energy", m_Kinetic, MetricUnit.JoulePerKilogram),
-            new Metric("surface drift", 1000 * m_Drift, MetricUnit.Millimetre),
-            new Metric("interior particles", m_Interior, MetricUnit.Count),
-            new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
-        };
+            var bias = Mean(m => m.m_GradientBias);
+            var ownBias = Mean(m => m.m_OwnDensityGradientBias);
+            int lost = 0;
+            foreach (HydrostaticColumnScenario m in m_Ensemble)
+                lost += m.m_Initial - m.m_Buffers.Status.Count;
+            return new[]
+            {
+                new Metric("pressure L2 error", Mean(m => m.m_PressureError).Mean, MetricUnit.Fraction),
+                new Metric("pressure gradient error", Math.Abs(bias.Mean), MetricUnit.Fraction),
+                new Metric("pressure gradient error spread", bias.Spread, MetricUnit.Fraction),
+                new Metric("pressure gradient error (own density)", Math.Abs(ownBias.Mean), MetricUnit.Fraction),
+                new Metric("pressure gradient error (own density) spread", ownBias.Spread, MetricUnit.Fraction),
+                new Metric("zero-pressure depth", 1000 * Mean(m => m.m_SurfaceOffset).Mean, MetricUnit.Millimetre),
+                new Metric("pressure scatter", Mean(m => m.m_PressureScatter).Mean, MetricUnit.Fraction),
+                new Metric("density error", Mean(m => m.m_DensityError).Mean, MetricUnit.Fraction),
+                new Metric("kinetic energy", Mean(m => m.m_Kinetic).Mean, MetricUnit.JoulePerKilogram),
+                new Metric("surface drift", 1000 * Mean(m => m.m_Drift).Mean, MetricUnit.Millimetre),
+                new Metric("interior particles", Mean(m => m.m_Interior).Mean, MetricUnit.Count),
+                new Metric("ensemble members", m_Members, MetricUnit.Count),
+                new Metric("particles lost", lost, MetricUnit.Count),
+            };
+        }
+
+        /// <summary>The members' mean of <paramref name="metric"/> and its standard deviation over them (NaN for one member).</summary>
+        (double Mean, double Spread) Mean(Func<HydrostaticColumnScenario, double> metric)
+        {
+            double sum = 0, squares = 0;
+            foreach (HydrostaticColumnScenario m in m_Ensemble)
+                sum += metric(m);
+            double mean = sum / m_Ensemble.Length;
+            foreach (HydrostaticColumnScenario m in m_Ensemble)
+                squares += (metric(m) - mean) * (metric(m) - mean);
+            return (mean, m_Ensemble.Length > 1 ? Math.Sqrt(squares / (m_Ensemble.Length - 1)) : double.NaN);
+        }
     }
 }
