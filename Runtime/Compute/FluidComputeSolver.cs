@@ -24,8 +24,7 @@ namespace SoftBodyDynamics.Compute
         readonly uint[] m_Stats = new uint[FluidComputeLayout.StatCount];
         FluidConstants m_Constants;
         int m_Capacity, m_Colliders, m_Drains;
-        bool m_ReadbackPending;
-        AsyncGPUReadbackRequest m_Readback;
+        readonly GpuReadback<uint> m_Readback = new GpuReadback<uint>();
         float m_LastMaxSpeed;
         /// <summary>Position-based: the depth of the last read-back (m), for the depth rule of the substeps.</summary>
         float m_LastDepth;
@@ -184,25 +183,21 @@ namespace SoftBodyDynamics.Compute
             return plan.Substeps;
         }
 
-        /// <summary>Takes the counters of a completed read-back (polled, never waited for) and asks for the next one.</summary>
+        /// <summary>
+        /// Takes the counters of a completed read-back (never waited for; <see cref="GpuReadback{T}"/> keeps them until taken,
+        /// whichever frame they arrived in) and asks for the next one when none is in flight.
+        /// </summary>
         void RequestStats()
         {
-            if (m_ReadbackPending)
+            ReadOnlySpan<uint> data = m_Readback.Take();
+            if (data.Length > 0)
             {
-                if (!m_Readback.done)
-                    return;
-                m_ReadbackPending = false;
-                if (!m_Readback.hasError)
-                {
-                    NativeArray<uint> data = m_Readback.GetData<uint>();
-                    for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
-                        m_Stats[i] = data[i];
-                    m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
-                    m_LastDepth = FluidComputeLayout.DepthOf(m_Constants, m_Stats);
-                }
+                for (int i = 0; i < m_Stats.Length && i < data.Length; i++)
+                    m_Stats[i] = data[i];
+                m_LastMaxSpeed = math.sqrt(math.asfloat(m_Stats[FluidComputeLayout.StatMaxSpeedSquared]));
+                m_LastDepth = FluidComputeLayout.DepthOf(m_Constants, m_Stats);
             }
-            m_Readback = AsyncGPUReadback.Request(m_Buffers[(int)FluidComputeBuffer.Stats]);
-            m_ReadbackPending = true;
+            m_Readback.Request(m_Buffers[(int)FluidComputeBuffer.Stats]);
         }
 
         public void SetConstants(in FluidComputeConstants constants) => m_ConstantBuffer.Set(constants);
@@ -219,6 +214,7 @@ namespace SoftBodyDynamics.Compute
         /// <summary>Releases every buffer.</summary>
         public void Dispose()
         {
+            m_Readback.Dispose();
             m_ConstantBuffer.Dispose();
             for (int b = 0; b < m_Buffers.Length; b++)
             {

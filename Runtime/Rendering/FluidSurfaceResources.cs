@@ -1,4 +1,5 @@
 using System;
+using SoftBodyDynamics.Compute;
 using SoftBodyDynamics.Solvers;
 using Unity.Collections;
 using UnityEngine;
@@ -18,8 +19,7 @@ namespace SoftBodyDynamics.Rendering
         static readonly int k_BufferCount = Enum.GetValues(typeof(FluidSurfaceBuffer)).Length;
 
         readonly GraphicsBuffer[] m_Buffers = new GraphicsBuffer[k_BufferCount];
-        AsyncGPUReadbackRequest m_Readback;
-        bool m_ReadbackPending;
+        GpuReadback<uint> m_Readback = new GpuReadback<uint>();
 
         public FluidSurfaceResources(int initialTileCapacity)
         {
@@ -58,8 +58,8 @@ namespace SoftBodyDynamics.Rendering
         }
 
         /// <summary>
-        /// Takes the counters of a completed read-back (polled, never waited for) and asks for the next one, keeping at
-        /// most one in flight. The request is queued when the renderer records the frame, before the frame's passes run,
+        /// Takes the counters of a completed read-back (never waited for; <see cref="GpuReadback{T}"/> keeps them until taken,
+        /// in whichever frame they arrived) and asks for the next one, keeping at most one in flight. The request is queued when the renderer records the frame, before the frame's passes run,
         /// so the counters it returns are those of the last frame drawn with these buffers. When the entries needed
         /// exceed the capacity, the capacity grows to the next power of two (the TileEntries buffer follows at the next
         /// <see cref="Ensure"/>) and this returns true with the old capacity in <paramref name="previousCapacity"/>.
@@ -68,32 +68,20 @@ namespace SoftBodyDynamics.Rendering
         {
             previousCapacity = TileCapacity;
             bool grew = false;
-            if (m_ReadbackPending)
+            ReadOnlySpan<uint> stats = m_Readback.Take();
+            if (stats.Length >= FluidSurfaceLayout.StatCount)
             {
-                if (!m_Readback.done)
-                    return false;
-                m_ReadbackPending = false;
-                if (!m_Readback.hasError)
+                LastEntries = (int)Math.Min(stats[FluidSurfaceLayout.StatEntries], (uint)int.MaxValue);
+                LastDropped = (int)Math.Min(stats[FluidSurfaceLayout.StatDropped], (uint)int.MaxValue);
+                if (LastEntries > TileCapacity)
                 {
-                    NativeArray<uint> stats = m_Readback.GetData<uint>();
-                    if (stats.Length >= FluidSurfaceLayout.StatCount)
-                    {
-                        LastEntries = (int)Math.Min(stats[FluidSurfaceLayout.StatEntries], (uint)int.MaxValue);
-                        LastDropped = (int)Math.Min(stats[FluidSurfaceLayout.StatDropped], (uint)int.MaxValue);
-                        if (LastEntries > TileCapacity)
-                        {
-                            TileCapacity = NextPowerOfTwo(LastEntries);
-                            grew = true;
-                        }
-                    }
+                    TileCapacity = NextPowerOfTwo(LastEntries);
+                    grew = true;
                 }
             }
             GraphicsBuffer statsBuffer = m_Buffers[(int)FluidSurfaceBuffer.Stats];
             if (statsBuffer != null && SystemInfo.supportsAsyncGPUReadback)
-            {
-                m_Readback = AsyncGPUReadback.Request(statsBuffer);
-                m_ReadbackPending = true;
-            }
+                m_Readback.Request(statsBuffer);
             return grew;
         }
 
@@ -115,7 +103,9 @@ namespace SoftBodyDynamics.Rendering
             }
             Constants?.Dispose();
             Constants = null;
-            m_ReadbackPending = false;
+            // A request in flight completes into the disposed copy's nothing; a later Ensure starts afresh.
+            m_Readback.Dispose();
+            m_Readback = new GpuReadback<uint>();
         }
     }
 }

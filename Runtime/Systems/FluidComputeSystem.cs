@@ -32,8 +32,17 @@ namespace SoftBodyDynamics
             public FluidConstants Constants;
             public FluidStatus Base;
             public int Frame;
-            public AsyncGPUReadbackRequest Positions, Velocities, Extras;
-            public bool ParticlesPending;
+            public readonly GpuReadback<float4> Positions = new GpuReadback<float4>(), Velocities = new GpuReadback<float4>();
+            public readonly GpuReadback<FluidComputeExtras> Extras = new GpuReadback<FluidComputeExtras>();
+
+            public void Dispose()
+            {
+                Solver.Dispose();
+                Spawns.Dispose();
+                Positions.Dispose();
+                Velocities.Dispose();
+                Extras.Dispose();
+            }
         }
 
         readonly Dictionary<Entity, Run> m_Runs = new Dictionary<Entity, Run>();
@@ -176,33 +185,29 @@ namespace SoftBodyDynamics
             runtime.Status.Expired = run.Base.Expired + (int)stats[FluidComputeLayout.StatTotalExpired];
             runtime.Status.Invalid = run.Base.Invalid + (int)stats[FluidComputeLayout.StatTotalInvalid];
             run.Frame++;
-            if (run.ParticlesPending)
-            {
-                if (!(run.Positions.done && run.Velocities.done && run.Extras.done))
-                    return;
-                run.ParticlesPending = false;
-                if (!run.Positions.hasError && !run.Velocities.hasError && !run.Extras.hasError)
-                    CopyParticles(m, fluid, run);
-            }
+            // The three requests go out together; their data is kept (GpuReadback) until all three have arrived.
+            if (run.Positions.Pending || run.Velocities.Pending || run.Extras.Pending)
+                return;
+            if (run.Positions.Arrived && run.Velocities.Arrived && run.Extras.Arrived)
+                CopyParticles(m, fluid, run);
             bool due = settings.Readback == FluidReadback.EveryFrame
                 || (settings.Readback == FluidReadback.EveryNFrames && run.Frame % math.max(1, settings.ReadbackInterval) == 0);
             if (!due)
                 return;
-            run.Positions = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Positions));
-            run.Velocities = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Velocities));
-            run.Extras = AsyncGPUReadback.Request(solver.Buffer(FluidComputeBuffer.Extras));
-            run.ParticlesPending = true;
+            run.Positions.Request(solver.Buffer(FluidComputeBuffer.Positions));
+            run.Velocities.Request(solver.Buffer(FluidComputeBuffer.Velocities));
+            run.Extras.Request(solver.Buffer(FluidComputeBuffer.Extras));
         }
 
         /// <summary>The read-back particles (the live count of the counters read back with them) into the fluid's buffers.</summary>
         static void CopyParticles(EntityManager m, Entity fluid, Run run)
         {
             FluidEntityArrays a = FluidSimulationSystem.Arrays(m, fluid);
-            NativeArray<float4> positions = run.Positions.GetData<float4>();
-            NativeArray<float4> velocities = run.Velocities.GetData<float4>();
-            NativeArray<FluidComputeExtras> extras = run.Extras.GetData<FluidComputeExtras>();
-            int count = math.min(run.Solver.LastKnownCount, math.min(positions.Length, a.Positions.Length));
-            FluidComputeStep.Unpack(positions.AsReadOnlySpan(), velocities.AsReadOnlySpan(), extras.AsReadOnlySpan(), count, FluidSystemFrame.Particles(a));
+            System.ReadOnlySpan<float4> positions = run.Positions.Take();
+            System.ReadOnlySpan<float4> velocities = run.Velocities.Take();
+            System.ReadOnlySpan<FluidComputeExtras> extras = run.Extras.Take();
+            int count = math.min(run.Solver.LastKnownCount, math.min(math.min(positions.Length, velocities.Length), math.min(extras.Length, a.Positions.Length)));
+            FluidComputeStep.Unpack(positions, velocities, extras, count, FluidSystemFrame.Particles(a));
         }
 
         /// <summary>Releases the GPU buffers of fluids that no longer exist.</summary>
@@ -215,8 +220,7 @@ namespace SoftBodyDynamics
             foreach (Entity e in m_Gone)
             {
                 m_Sources.Remove(e);
-                m_Runs[e].Solver.Dispose();
-                m_Runs[e].Spawns.Dispose();
+                m_Runs[e].Dispose();
                 m_Runs.Remove(e);
             }
         }
@@ -226,8 +230,7 @@ namespace SoftBodyDynamics
             foreach (var pair in m_Runs)
             {
                 m_Sources.Remove(pair.Key);
-                pair.Value.Solver.Dispose();
-                pair.Value.Spawns.Dispose();
+                pair.Value.Dispose();
             }
             m_Runs.Clear();
         }
