@@ -7,6 +7,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>Building blocks of the fluid scenarios: lattice blocks, bulk front, density statistics.</summary>
     public static class FluidScene
     {
+        /// <summary>The mean of <paramref name="metric"/> over an ensemble's members and its standard deviation over them (NaN for one member).</summary>
+        public static (double Mean, double Spread) MeanAndSpread<T>(T[] members, Func<T, double> metric)
+        {
+            double sum = 0, squares = 0;
+            foreach (T m in members)
+                sum += metric(m);
+            double mean = sum / members.Length;
+            foreach (T m in members)
+                squares += (metric(m) - mean) * (metric(m) - mean);
+            return (mean, members.Length > 1 ? Math.Sqrt(squares / (members.Length - 1)) : double.NaN);
+        }
+
         /// <summary>A figure's series of a row's method: the text before its last comma (the whole method without one).</summary>
         public static string SeriesOf(string method)
         {

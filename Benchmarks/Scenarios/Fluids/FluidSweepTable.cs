@@ -7,7 +7,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 {
     /// <summary>
     /// The summary of a fluid resolution sweep whose step is one 1/60 s frame: per row its series and resolution (the
-    /// method's text around its last comma), particles, µs per frame, the error, one more metric, and the observed order
+    /// method's text around its last comma), particles, µs per frame, the error (± its spread over an ensemble's members,
+    /// when the row has one), one more metric, and the observed order
     /// log(e₁/e₂)/log(Δx₁/Δx₂) against the previous row of the same series (from the "spacing" metric).
     /// </summary>
     public static class FluidSweepTable
@@ -37,8 +38,10 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                     if (e0 > 0 && e1 > 0 && d0 > d1)
                         order = F("{0:0.00}", Math.Log(e0 / e1) / Math.Log(d0 / d1));
                 }
-                md.AppendLine(F("| {0} | {1} | {2} | {3:0} | {4:0.00} % | {5} | {6} |", series, FluidScene.PointOf(r.Method), r.Size,
-                    Cost(r), 100 * e1, second(r), order));
+                double spread = r.Value(error + " spread");
+                string shown = double.IsNaN(spread) ? F("{0:0.00} %", 100 * e1) : F("{0:0.00} % ± {1:0.00}", 100 * e1, 100 * spread);
+                md.AppendLine(F("| {0} | {1} | {2} | {3:0} | {4} | {5} | {6} |", series, FluidScene.PointOf(r.Method), r.Size,
+                    Cost(r), shown, second(r), order));
                 previous = r;
                 havePrevious = true;
             }

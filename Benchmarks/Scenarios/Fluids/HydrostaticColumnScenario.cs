@@ -217,16 +217,6 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             };
         }
 
-        /// <summary>The members' mean of <paramref name="metric"/> and its standard deviation over them (NaN for one member).</summary>
-        (double Mean, double Spread) Mean(Func<HydrostaticColumnScenario, double> metric)
-        {
-            double sum = 0, squares = 0;
-            foreach (HydrostaticColumnScenario m in m_Ensemble)
-                sum += metric(m);
-            double mean = sum / m_Ensemble.Length;
-            foreach (HydrostaticColumnScenario m in m_Ensemble)
-                squares += (metric(m) - mean) * (metric(m) - mean);
-            return (mean, m_Ensemble.Length > 1 ? Math.Sqrt(squares / (m_Ensemble.Length - 1)) : double.NaN);
-        }
+        (double Mean, double Spread) Mean(Func<HydrostaticColumnScenario, double> metric) => FluidScene.MeanAndSpread(m_Ensemble, metric);
     }
 }

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Threading.Tasks;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -33,18 +34,28 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly int m_Layers;
         readonly FluidParameters m_Parameters;
         readonly string m_Setting;
+        readonly int m_Members;
+        StandingWaveScenario[] m_Ensemble;
         FluidConstants m_Constants;
         FluidBuffers m_Buffers;
         long m_Items;
         int m_Initial, m_Capped;
-        double m_FrequencyError, m_Damping, m_FittedAmplitude, m_FitResidual;
+        /// <summary>ω_fit/ω − 1 of this member.</summary>
+        double m_FrequencyBias;
+        double m_Damping, m_FittedAmplitude, m_FitResidual;
 
         /// <param name="layers">Particle layers over the depth (Δx = d / layers).</param>
         /// <param name="parameters">The fluid; spacing, domain, gravity and periodic axes are set by the scene.</param>
         /// <param name="setting">The row's label.</param>
-        public StandingWaveScenario(int layers, FluidParameters parameters, string setting)
+        /// <param name="members">
+        /// Waves run in parallel whose ν is scaled by 1 + k/100 (k = 0 … members − 1: water's ν is 1/2500 of the artificial
+        /// viscosity's, no physical change): one wave's fitted frequency moves by several per cent under such a change at
+        /// coarse resolutions, so the metrics are the members' means, the frequency error with its spread.
+        /// </param>
+        public StandingWaveScenario(int layers, FluidParameters parameters, string setting, int members = 1)
         {
             m_Layers = layers;
+            m_Members = Math.Max(1, members);
             m_Parameters = parameters;
             m_Setting = setting;
         }
@@ -88,6 +99,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
+            m_Ensemble = new StandingWaveScenario[m_Members];
+            m_Ensemble[0] = this;
+            for (int k = 1; k < m_Members; k++)
+            {
+                FluidParameters member = m_Parameters;
+                member.Viscosity *= 1f + 0.01f * k;
+                m_Ensemble[k] = new StandingWaveScenario(m_Layers, member, m_Setting);
+            }
+            Parallel.For(0, m_Members, k => m_Ensemble[k].Run());
+        }
+
+        /// <summary>Runs this member's wave for <see cref="Periods"/> periods and fits it.</summary>
+        void Run()
+        {
             FluidParameters p = Tank(m_Parameters, m_Layers);
             m_Constants = new FluidConstants(p);
             m_Buffers = new FluidBuffers(Size, m_Constants.Grid);
@@ -109,7 +134,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                 centre[f] = CentreX();
             }
             var fit = DampedSineFit.Fit(t, centre, AngularFrequency);
-            m_FrequencyError = Math.Abs(fit.omega / AngularFrequency - 1);
+            m_FrequencyBias = fit.omega / AngularFrequency - 1;
             m_Damping = fit.damping;
             m_FittedAmplitude = fit.amplitude;
             m_FitResidual = fit.residual;
@@ -134,23 +159,36 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <summary>Analytic amplitude of the centre of mass along x (m): (1/(Ld))·∫₀ᴸ (x − L/2)·A·cos(kx) dx = 2LA/(π²d).</summary>
         public static double CentreAmplitude => 2.0 * Length * Amplitude / (Math.PI * Math.PI * Depth);
 
-        /// <summary>|ω_fit/ω − 1| (after Setup).</summary>
-        public double FrequencyError => m_FrequencyError;
+        /// <summary>|mean of ω_fit/ω − 1| over the members (after Setup).</summary>
+        public double FrequencyError => Math.Abs(Mean(m => m.m_FrequencyBias).Mean);
 
-        /// <summary>Fitted amplitude of the centre of mass over the analytic <see cref="CentreAmplitude"/> (after Setup).</summary>
-        public double AmplitudeRatio => m_FittedAmplitude / CentreAmplitude;
+        /// <summary>Fitted amplitude of the centre of mass over the analytic <see cref="CentreAmplitude"/>, the members' mean (after Setup).</summary>
+        public double AmplitudeRatio => Mean(m => m.m_FittedAmplitude).Mean / CentreAmplitude;
 
         public void Step() => Frame();
 
-        public IReadOnlyList<Metric> Evaluate() => new[]
+        public IReadOnlyList<Metric> Evaluate()
         {
-            new Metric("frequency error", m_FrequencyError, MetricUnit.Fraction),
-            new Metric("damping ratio", m_Damping / AngularFrequency, MetricUnit.Dimensionless),
-            new Metric("amplitude ratio", AmplitudeRatio, MetricUnit.Dimensionless),
-            new Metric("fit residual", m_FitResidual / CentreAmplitude, MetricUnit.Fraction),
-            new Metric("spacing", 1000.0 * Depth / m_Layers, MetricUnit.Millimetre),
-            new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
-            new Metric("frames at the substep cap", m_Capped, MetricUnit.Count),
-        };
+            int lost = 0, capped = 0;
+            foreach (StandingWaveScenario m in m_Ensemble)
+            {
+                lost += m.m_Initial - m.m_Buffers.Status.Count;
+                capped += m.m_Capped;
+            }
+            return new[]
+            {
+                new Metric("frequency error", FrequencyError, MetricUnit.Fraction),
+                new Metric("frequency error spread", Mean(m => m.m_FrequencyBias).Spread, MetricUnit.Fraction),
+                new Metric("damping ratio", Mean(m => m.m_Damping).Mean / AngularFrequency, MetricUnit.Dimensionless),
+                new Metric("amplitude ratio", AmplitudeRatio, MetricUnit.Dimensionless),
+                new Metric("fit residual", Mean(m => m.m_FitResidual).Mean / CentreAmplitude, MetricUnit.Fraction),
+                new Metric("spacing", 1000.0 * Depth / m_Layers, MetricUnit.Millimetre),
+                new Metric("ensemble members", m_Members, MetricUnit.Count),
+                new Metric("particles lost", lost, MetricUnit.Count),
+                new Metric("frames at the substep cap", capped, MetricUnit.Count),
+            };
+        }
+
+        (double Mean, double Spread) Mean(Func<StandingWaveScenario, double> metric) => FluidScene.MeanAndSpread(m_Ensemble, metric);
     }
 }
