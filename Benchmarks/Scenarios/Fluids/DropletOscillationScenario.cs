@@ -36,6 +36,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         readonly FluidParameters m_Parameters;
         readonly string m_Setting;
         readonly double m_Excitation;
+        readonly int m_Members;
+        DropletOscillationScenario[] m_Ensemble;
         FluidConstants m_Constants;
         FluidBuffers m_Buffers;
         long m_Items;
@@ -47,8 +49,13 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         /// <param name="parameters">The fluid and its cohesion; spacing, domain and gravity are set by the scene.</param>
         /// <param name="setting">The row's label.</param>
         /// <param name="amplitude">Surface amplitude a/R of the excited mode.</param>
-        public DropletOscillationScenario(float spacing, FluidParameters parameters, string setting, double amplitude = DefaultAmplitude)
+        /// <param name="members">
+        /// Drops run in parallel whose ν is scaled by 1 + k/100 (k = 0 … members − 1; water's ν, nothing a drop can feel):
+        /// one drop's σ ratio moves by 0.1–0.4 under such a change, so the metrics are the members' means, the σ ratio with its spread.
+        /// </param>
+        public DropletOscillationScenario(float spacing, FluidParameters parameters, string setting, double amplitude = DefaultAmplitude, int members = 1)
         {
+            m_Members = Math.Max(1, members);
             m_Excitation = amplitude;
             m_Spacing = spacing;
             m_Parameters = parameters;
@@ -106,6 +113,20 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         }
 
         public void Setup()
+        {
+            m_Ensemble = new DropletOscillationScenario[m_Members];
+            m_Ensemble[0] = this;
+            for (int k = 1; k < m_Members; k++)
+            {
+                FluidParameters member = m_Parameters;
+                member.Viscosity *= 1f + 0.01f * k;
+                m_Ensemble[k] = new DropletOscillationScenario(m_Spacing, member, m_Setting, m_Excitation);
+            }
+            System.Threading.Tasks.Parallel.For(0, m_Members, k => m_Ensemble[k].Run());
+        }
+
+        /// <summary>Settles this member's drop, measures its stress, excites the l = 2 mode and fits it.</summary>
+        void Run()
         {
             m_Constants = new FluidConstants(Scene(m_Parameters, m_Spacing));
             m_Buffers = Ball(m_Constants, m_Spacing);
@@ -288,23 +309,29 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public IReadOnlyList<Metric> Evaluate()
         {
-            DropletStress s = m_Stress;
-            double sigmaP = s.PressureTension, sigmaF = FrequencyTension;
+            int lost = 0;
+            foreach (DropletOscillationScenario m in m_Ensemble)
+                lost += m.m_Initial - m.m_Buffers.Status.Count;
+            var ratio = FluidScene.MeanAndSpread(m_Ensemble, m => m.FrequencyTension / m.m_Stress.PressureTension);
             return new[]
             {
-                new Metric("σ from pressure (N/m)", sigmaP, MetricUnit.Dimensionless),
-                new Metric("σ from EOS pressure (N/m)", s.EosTension, MetricUnit.Dimensionless),
-                new Metric("σ from frequency (N/m)", sigmaF, MetricUnit.Dimensionless),
-                new Metric("σ ratio", sigmaF / sigmaP, MetricUnit.Dimensionless),
-                new Metric("frequency error", m_Omega / s.RayleighOmega(sigmaP) - 1, MetricUnit.Fraction),
-                new Metric("damping ratio", m_Damping / m_Omega, MetricUnit.Dimensionless),
-                new Metric("fit residual", m_Residual / m_FittedAmplitude, MetricUnit.Fraction),
-                new Metric("volume change", s.VolumeChange(m_Parameters.RestDensity), MetricUnit.Fraction),
-                new Metric("gyration volume change", Math.Pow(s.GyrationRadius / m_InitialGyration, 3) - 1, MetricUnit.Fraction),
-                new Metric("radius", 1000 * s.Radius, MetricUnit.Millimetre),
-                new Metric("particles lost", m_Initial - m_Buffers.Status.Count, MetricUnit.Count),
+                new Metric("σ from pressure (N/m)", Mean(m => m.m_Stress.PressureTension), MetricUnit.Dimensionless),
+                new Metric("σ from EOS pressure (N/m)", Mean(m => m.m_Stress.EosTension), MetricUnit.Dimensionless),
+                new Metric("σ from frequency (N/m)", Mean(m => m.FrequencyTension), MetricUnit.Dimensionless),
+                new Metric("σ ratio", ratio.Mean, MetricUnit.Dimensionless),
+                new Metric("σ ratio spread", ratio.Spread, MetricUnit.Dimensionless),
+                new Metric("frequency error", Mean(m => m.m_Omega / m.m_Stress.RayleighOmega(m.m_Stress.PressureTension) - 1), MetricUnit.Fraction),
+                new Metric("damping ratio", Mean(m => m.m_Damping / m.m_Omega), MetricUnit.Dimensionless),
+                new Metric("fit residual", Mean(m => m.m_Residual / m.m_FittedAmplitude), MetricUnit.Fraction),
+                new Metric("volume change", Mean(m => m.m_Stress.VolumeChange(m.m_Parameters.RestDensity)), MetricUnit.Fraction),
+                new Metric("gyration volume change", Mean(m => Math.Pow(m.m_Stress.GyrationRadius / m.m_InitialGyration, 3) - 1), MetricUnit.Fraction),
+                new Metric("radius", 1000 * Mean(m => m.m_Stress.Radius), MetricUnit.Millimetre),
+                new Metric("ensemble members", m_Members, MetricUnit.Count),
+                new Metric("particles lost", lost, MetricUnit.Count),
             };
         }
+
+        double Mean(Func<DropletOscillationScenario, double> metric) => FluidScene.MeanAndSpread(m_Ensemble, metric).Mean;
     }
 
     /// <summary>The stress of a settled drop (<see cref="DropletOscillationScenario.Measure"/>); pressures in Pa.</summary>

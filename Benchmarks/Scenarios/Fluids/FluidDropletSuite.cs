@@ -36,7 +36,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
                      $"the last {DropletOscillationScenario.AveragedFrames} settling frames; σ from EOS pressure = the mean Tait pressure there times R/2; " +
                      "σ from frequency = ω²·3M/(32π), ω of a damped-sine fit to Q = mean(2z² − x² − y²); σ ratio = σ_f/σ_p; frequency error = ω/ω_p − 1, " +
                      "ω_p Rayleigh's for σ_p; R = (3Nm/(4πρ̄))^⅓, ρ̄ the interior's mean density; volume change = ρ₀/ρ̄ − 1; gyration volume change = " +
-                     "(R_g/R_g,0)³ − 1 against the starting lattice ball. One item is one particle-substep; a step is one 1/60 s frame.",
+                     "(R_g/R_g,0)³ − 1 against the starting lattice ball. Each row is the mean over " + Members + " drops whose ν is scaled by 1 + k/100 " +
+                     "(one drop's σ ratio moves by 0.1–0.4 under such a change), the σ ratio with its standard deviation over them. " +
+                     "One item is one particle-substep; a step is one 1/60 s frame.",
             Notes = new[]
             {
                 "Default run: γ = 0.2 at Δx = 1 cm; full run: both γ at 1 cm, the amplitude rows, and γ = 0.2 at 5 mm (about 3 min).",
@@ -58,6 +60,9 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             yield return Row(Tensions[1], Spacings[1], DropletOscillationScenario.DefaultAmplitude);
         }
 
+        /// <summary>Drops per row (<see cref="DropletOscillationScenario"/>'s ensemble).</summary>
+        public const int Members = 4;
+
         static DropletOscillationScenario Row(float tension, float spacing, double amplitude)
         {
             FluidParameters p = FluidParameters.Default;
@@ -66,7 +71,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             p.Cohesion = FluidCohesionModel.Akinci;
             p.SurfaceTension = tension;
             string label = F("Akinci (γ = {0:0.##}, a/R = {1:0.##})", tension, amplitude);
-            return new DropletOscillationScenario(spacing, p, label, amplitude);
+            return new DropletOscillationScenario(spacing, p, label, amplitude, Members);
         }
 
         public string Series(ScenarioOutcome row) => FluidScene.SeriesOf(row.Method);
@@ -80,11 +85,12 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public string Summary(IReadOnlyList<ScenarioOutcome> rows, RunScope scope)
         {
             var md = new StringBuilder();
-            md.AppendLine("| row | σ from EOS pressure (N/m) | σ from pressure (N/m) | σ from frequency (N/m) | σ ratio | damping ratio | volume change | gyration volume change |");
+            md.AppendLine("| row (means over the drops) | σ from EOS pressure (N/m) | σ from pressure (N/m) | σ from frequency (N/m) | σ ratio, mean ± SD | damping ratio | volume change | gyration volume change |");
             md.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|");
             foreach (ScenarioOutcome r in rows)
-                md.AppendLine(F("| {0} | {1:0.000} | {2:0.000} | {3:0.000} | {4:0.00} | {5:0.00} | {6:+0.00;−0.00} % | {7:+0.0;−0.0} % |", r.Method,
-                    r.Value("σ from EOS pressure (N/m)"), r.Value("σ from pressure (N/m)"), r.Value("σ from frequency (N/m)"), r.Value("σ ratio"),
+                md.AppendLine(F("| {0} | {1:0.000} | {2:0.000} | {3:0.000} | {4} | {5:0.00} | {6:+0.00;−0.00} % | {7:+0.0;−0.0} % |", r.Method,
+                    r.Value("σ from EOS pressure (N/m)"), r.Value("σ from pressure (N/m)"), r.Value("σ from frequency (N/m)"),
+                    double.IsNaN(r.Value("σ ratio spread")) ? F("{0:0.00}", r.Value("σ ratio")) : F("{0:0.00} ± {1:0.00}", r.Value("σ ratio"), r.Value("σ ratio spread")),
                     r.Value("damping ratio"), 100 * r.Value("volume change"), 100 * r.Value("gyration volume change")));
             return md.ToString();
         }
