@@ -114,15 +114,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            m_Ensemble = new DropletOscillationScenario[m_Members];
-            m_Ensemble[0] = this;
-            for (int k = 1; k < m_Members; k++)
-            {
-                FluidParameters member = m_Parameters;
-                member.Viscosity *= 1f + 0.01f * k;
-                m_Ensemble[k] = new DropletOscillationScenario(m_Spacing, member, m_Setting, m_Excitation);
-            }
-            System.Threading.Tasks.Parallel.For(0, m_Members, k => m_Ensemble[k].Run());
+            m_Ensemble = FluidScene.Ensemble(this, m_Members, m_Parameters,
+                p => new DropletOscillationScenario(m_Spacing, p, m_Setting, m_Excitation), m => m.Run());
         }
 
         /// <summary>Settles this member's drop, measures its stress, excites the l = 2 mode and fits it.</summary>

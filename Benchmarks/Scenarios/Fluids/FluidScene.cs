@@ -1,4 +1,5 @@
 using System;
+using System.Threading.Tasks;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -7,6 +8,26 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// <summary>Building blocks of the fluid scenarios: lattice blocks, bulk front, density statistics.</summary>
     public static class FluidScene
     {
+        /// <summary>
+        /// An ensemble of one scene: <paramref name="first"/> and <paramref name="members"/> − 1 copies made by <paramref name="make"/>
+        /// from <paramref name="parameters"/> with ν scaled by 1 + k/100 (k = 1 … members − 1: water's ν is 1/2500 of the
+        /// artificial viscosity's, no physical change, but a settled fluid's state is chaotic enough to move its metrics by
+        /// several per cent), each run by <paramref name="run"/> in parallel.
+        /// </summary>
+        public static T[] Ensemble<T>(T first, int members, FluidParameters parameters, Func<FluidParameters, T> make, Action<T> run)
+        {
+            var ensemble = new T[Math.Max(1, members)];
+            ensemble[0] = first;
+            for (int k = 1; k < ensemble.Length; k++)
+            {
+                FluidParameters p = parameters;
+                p.Viscosity *= 1f + 0.01f * k;
+                ensemble[k] = make(p);
+            }
+            Parallel.For(0, ensemble.Length, k => run(ensemble[k]));
+            return ensemble;
+        }
+
         /// <summary>The mean of <paramref name="metric"/> over an ensemble's members and its standard deviation over them (NaN for one member).</summary>
         public static (double Mean, double Spread) MeanAndSpread<T>(T[] members, Func<T, double> metric)
         {

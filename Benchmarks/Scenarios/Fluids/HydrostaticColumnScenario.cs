@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Threading.Tasks;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -65,15 +64,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            m_Ensemble = new HydrostaticColumnScenario[m_Members];
-            m_Ensemble[0] = this;
-            for (int k = 1; k < m_Members; k++)
-            {
-                FluidParameters p = m_Parameters;
-                p.Viscosity *= 1f + 0.01f * k;
-                m_Ensemble[k] = new HydrostaticColumnScenario(p, m_Setting, m_SettleSeconds, m_Spacing);
-            }
-            Parallel.For(0, m_Members, k => m_Ensemble[k].Settle());
+            m_Ensemble = FluidScene.Ensemble(this, m_Members, m_Parameters,
+                p => new HydrostaticColumnScenario(p, m_Setting, m_SettleSeconds, m_Spacing), m => m.Settle());
         }
 
         /// <summary>Settles this member's column and measures it.</summary>

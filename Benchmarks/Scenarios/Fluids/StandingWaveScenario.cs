@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Threading.Tasks;
 using SoftBodyDynamics.Solvers;
 using Unity.Mathematics;
 
@@ -99,15 +98,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         public void Setup()
         {
-            m_Ensemble = new StandingWaveScenario[m_Members];
-            m_Ensemble[0] = this;
-            for (int k = 1; k < m_Members; k++)
-            {
-                FluidParameters member = m_Parameters;
-                member.Viscosity *= 1f + 0.01f * k;
-                m_Ensemble[k] = new StandingWaveScenario(m_Layers, member, m_Setting);
-            }
-            Parallel.For(0, m_Members, k => m_Ensemble[k].Run());
+            m_Ensemble = FluidScene.Ensemble(this, m_Members, m_Parameters, p => new StandingWaveScenario(m_Layers, p, m_Setting), m => m.Run());
         }
 
         /// <summary>Runs this member's wave for <see cref="Periods"/> periods and fits it.</summary>
