@@ -13,7 +13,7 @@ cbuffer FluidComputeConstants
     float3 DomainMin;                   // (m)
     float WallDistance;                 // (m)
     float3 DomainMax;                   // (m)
-    float WallScale;                    // wall density scale κ
+    float WallScale;                    // position-based walls' density scale κ
     float3 Gravity;                     // (m/s²)
     float ArtificialPressureScale;      // position-based artificial pressure k·λ₁ (m²)
     float SmoothingLength;              // kernel radius H (m)
@@ -53,9 +53,9 @@ cbuffer FluidComputeConstants
     float3 FaceNoSlip;                  // no-slip share of the domain faces per axis (0 on periodic axes)
     float ColliderNoSlip;               // the colliders' no-slip share
     float GradientTraceScale;           // −κ∇·m·C_spiky
-    float GradientWallScale;            // the walls' trace scale κ_T
     float MaxGradientRenormalization;   // largest gradient renormalization
     float ViscosityMomentScale;         // FluidConstants.ViscosityMomentScale (m⁶/kg)
+    float Padding;                      // unused: fills the last 16-byte row
 };
 
 #endif

@@ -1,4 +1,4 @@
-// Density and neighbour lists (FluidPasses.Density, DensityFromNeighbours, StoreDensity) over the 25 rows of the
+// Density and neighbour lists (FluidPasses.Density, DensityFromNeighbours, GhostDensity, StoreDensity) over the 25 rows of the
 // 5×5×5 cells around a particle (NeighbourRows), in the same order as the CPU so the sums round alike.
 #ifndef SBD_FLUID_DENSITY_INCLUDED
 #define SBD_FLUID_DENSITY_INCLUDED
@@ -28,12 +28,36 @@ int4 AxisRanges(float u, int n, bool periodic, float period)
     return r;
 }
 
-// ρ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored and counted against the bound; also the walls'
-// share of the gradient trace.
-float StoreDensity(uint i, float3 xi, float kernelSum, out float wallTrace)
+// FluidPasses.GhostDensity (weakly compressible): the images of the particle and of its listed neighbours through every
+// set of walls add (h² − r²)³ and (h − r)²·r, and with bulk (vᵢ − v_g)·xᵢ_g·(h² − r²)² with the image's mirrored velocity.
+void GhostDensity(GhostWalls walls, float3 xi, float3 vi, uint listStart, uint found, bool bulk,
+    inout float sum, inout float spiky, inout float divergence)
 {
-    float wall; float3 push;
-    SampleWalls(xi, wall, push, wallTrace);
+    float h = SmoothingLength, h2 = SmoothingLengthSquared;
+    uint subsets = (1u << walls.count) - 1u;
+    for (uint subset = 1; subset <= subsets; subset++)
+    for (int m = -1; m < (int)found; m++)
+    {
+        uint j = m < 0 ? 0 : _Neighbours[listStart + (uint)m];
+        float3 y = m < 0 ? float3(0.0, 0.0, 0.0) : -PairOffset(xi, _Positions[j].xyz);
+        float3 v = m < 0 ? vi : (bulk ? _Velocities[j].xyz : float3(0.0, 0.0, 0.0));
+        if (!MirrorGhost(walls, subset, y, v)) continue;
+        float q = h2 - (y.x * y.x + y.y * y.y + y.z * y.z);
+        if (!(q > 0.0)) continue;
+        sum += q * q * q;
+        float distance = sqrt(h2 - q);
+        float hr = h - distance;
+        spiky += hr * hr * distance;
+        if (bulk) divergence -= dot(vi - v, y) * (q * q);
+    }
+}
+
+// ρ = m·(poly6 coefficient)·Σ(h² − r²)³ (weakly compressible: the ghosts included), plus for position-based fluids
+// ρ₀·(the walls' share), stored and counted against the bound.
+float StoreDensity(uint i, float3 xi, float kernelSum)
+{
+    float wall = 0.0; float3 push;
+    if (WeaklyCompressible == 0) SampleWalls(xi, wall, push);
     float rho = ParticleMass * Poly6Coefficient * kernelSum + RestDensity * wall;
     _Densities[i] = rho;
     float ratio = rho / RestDensity;
@@ -42,10 +66,10 @@ float StoreDensity(uint i, float3 xi, float kernelSum, out float wallTrace)
     return rho;
 }
 
-// FluidConstants.GradientRenormalization: 3 / the corrected gradient trace, clamped to 1/limit … limit.
-float GradientRenormalization(float spikySum, float rho, float wallTrace)
+// FluidConstants.GradientRenormalization: 3 / the corrected gradient trace (the ghosts included), clamped to 1/limit … limit.
+float GradientRenormalization(float spikySum, float rho)
 {
-    float trace = GradientTraceScale * spikySum / rho + wallTrace;
+    float trace = GradientTraceScale * spikySum / rho;
     return clamp(3.0 / trace, 1.0 / MaxGradientRenormalization, MaxGradientRenormalization);
 }
 
@@ -109,8 +133,12 @@ void Density(uint3 id : SV_DispatchThreadID)
     }
     _NeighbourCounts[i] = found;
     if (overflow > 0) InterlockedAdd(_Stats[STAT_NEIGHBOUR_OVERFLOW], overflow);
-    float wallTrace;
-    float rho = StoreDensity(i, xi, sum, wallTrace);
+    if (tait)
+    {
+        GhostWalls walls = NearWalls(xi);
+        if (walls.count > 0) GhostDensity(walls, xi, vi, listStart, found, bulk, sum, spiky, divergence);
+    }
+    float rho = StoreDensity(i, xi, sum);
     if (tait)
     {
         float rho0 = RestDensity;
@@ -120,7 +148,7 @@ void Density(uint3 id : SV_DispatchThreadID)
         float pressure = TaitStiffness * (q2 * q2 * q2 * qr - 1.0);
         // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ (FluidConstants.BulkPressureScale); the total stays ≥ 0.
         if (bulk) pressure = max(pressure - BulkPressureScale * divergence / rho, 0.0);
-        _Pressures[i] = GradientRenormalization(spiky, rho, wallTrace) * pressure / (rc * rc);
+        _Pressures[i] = GradientRenormalization(spiky, rho) * pressure / (rc * rc);
     }
 }
 
@@ -140,8 +168,7 @@ void DensityFromNeighbours(uint3 id : SV_DispatchThreadID)
         float q = h2 - (r.x * r.x + r.y * r.y + r.z * r.z);
         if (q > 0.0) sum += q * q * q;
     }
-    float wallTrace;
-    StoreDensity(i, xi, sum, wallTrace);
+    StoreDensity(i, xi, sum);
 }
 
 #endif

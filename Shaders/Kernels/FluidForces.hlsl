@@ -22,58 +22,44 @@ void SurfaceNormals(uint3 id : SV_DispatchThreadID)
     _VectorsB[i] = float4(SmoothingLength * n, 0.0);
 }
 
-// FluidPasses.MirroredPressure, one wall: the tangential part of the pressure term from i's neighbours mirrored through a
-// plane at distance d (unit normal n into the fluid), the ghost of j carrying pⱼ; before the factor −m·C_spiky·κ∇.
-float3 MirroredPressure(uint i, float3 xi, float pi, float3 n, float d)
+// FluidPasses.GhostPressure: the images of i and of its neighbours through every set of walls, each carrying its source's
+// κⱼpⱼ/ρⱼ² extrapolated hydrostatically where pⱼ > 0, max(0, κⱼpⱼ/ρⱼ² + g·(x_g − xⱼ)/ρⱼ), its density and its mirrored velocity; before
+// the factor −m·C_spiky·κ∇.
+float3 GhostPressure(GhostWalls walls, uint i, float3 xi, float3 vi, float pi, float rhoi, float alphaCh)
 {
-    float H = SmoothingLength;
-    d = max(d, 0.0);
+    float H = SmoothingLength, H2 = SmoothingLengthSquared;
+    float eta2 = 0.01 * H2, minDistance = 1e-6 * H;
     float3 sum = float3(0.0, 0.0, 0.0);
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
-    for (uint m = 0; m < count; m++)
+    uint subsets = (1u << walls.count) - 1u;
+    for (uint subset = 1; subset <= subsets; subset++)
+    for (int m = -1; m < (int)count; m++)
     {
-        uint j = _Neighbours[list + m];
-        float3 rij = PairOffset(xi, _Positions[j].xyz);
-        float along = -dot(rij, n);
-        float t = d + along;
-        if (!(t > 0.0)) continue;
-        float3 tangential = rij + along * n;
-        float normal = d + t;
-        float r2 = dot(tangential, tangential) + normal * normal;
-        if (!(r2 < H * H)) continue;
+        uint j = m < 0 ? i : _Neighbours[list + (uint)m];
+        float3 source = m < 0 ? float3(0.0, 0.0, 0.0) : -PairOffset(xi, _Positions[j].xyz);
+        float3 y = source;
+        float3 v = m < 0 ? vi : _Velocities[j].xyz;
+        if (!MirrorGhost(walls, subset, y, v)) continue;
+        float r2 = dot(y, y);
+        if (!(r2 < H2)) continue;
         float r = sqrt(r2);
+        if (!(r > minDistance)) continue;
+        float rhoj = m < 0 ? rhoi : _Densities[j];
+        // Extrapolated only from a source under pressure (a lone particle rests on the wall through its contact).
+        float pj = m < 0 ? pi : _Pressures[j];
+        float ghost = pj > 0.0 ? max(pj + dot(Gravity, y - source) / max(rhoj, RestDensity), 0.0) : 0.0;
+        float3 rig = -y;
+        float scale = pi + ghost;
+        float approach = min(dot(vi - v, rig), 0.0);
+        scale -= alphaCh * approach / ((rhoi + rhoj) * (r2 + eta2));
         float hr = H - r;
-        sum += ((pi + _Pressures[j]) * hr * hr / r) * tangential;
-    }
-    return sum;
-}
-
-// FluidPasses.MirroredPressure: the domain's faces (none on a periodic axis) and the colliders' tangent planes within h.
-float3 MirroredPressures(uint i, float3 xi, float pi)
-{
-    float H = SmoothingLength;
-    float3 sum = float3(0.0, 0.0, 0.0);
-    [unroll] for (int a = 0; a < 3; a++)
-    {
-        if (Period[a] > 0.0) continue;
-        float below = xi[a] - DomainMin[a], above = DomainMax[a] - xi[a];
-        float3 axis = float3(0.0, 0.0, 0.0);
-        axis[a] = 1.0;
-        if (below < H) sum += MirroredPressure(i, xi, pi, axis, below);
-        if (above < H) sum += MirroredPressure(i, xi, pi, -axis, above);
-    }
-    for (uint c = 0; c < ColliderCount; c++)
-    {
-        // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
-        float3 normal; float depth; bool deep;
-        if (Penetration(LoadShape(c), xi, H, normal, depth, deep))
-            sum += MirroredPressure(i, xi, pi, normal, H - depth);
+        sum += (scale * hr * hr / r) * rig;
     }
     return sum;
 }
 
 // Weakly compressible: gravity, the symmetric pressure term with Monaghan's artificial viscosity (Müller 2003, eq. 10;
-// Becker & Teschner 2007, eq. 11), the walls' push (Akinci 2012, eq. 9) and their ghosts' tangential share (MirroredPressures); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
+// Becker & Teschner 2007, eq. 11) over the neighbours and the walls' ghosts (GhostPressure); (position-based: CohesionForces). Then flocking or Akinci cohesion. Returns vᵢ + h·aᵢ.
 float4 Acceleration(uint i, bool pressureAndGravity)
 {
     float h = SubstepSeconds, H = SmoothingLength, H2 = SmoothingLengthSquared;
@@ -106,11 +92,10 @@ float4 Acceleration(uint i, bool pressureAndGravity)
             else
                 sum += scale * H2 * CoincidentDirection(idI, (int)_Extras[j].y);
         }
-        sum += MirroredPressures(i, xi, pi);
+        GhostWalls walls = NearWalls(xi);
+        if (walls.count > 0) sum += GhostPressure(walls, i, xi, vi, pi, rhoi, alphaCh);
         sum *= -m * SpikyGradientCoefficient * GradientCorrection;
-        float wall, trace; float3 push;
-        SampleWalls(xi, wall, push, trace);
-        a += Gravity + sum + rho0 * pi * push;
+        a += Gravity + sum;
     }
     if (Flocking != 0)
     {

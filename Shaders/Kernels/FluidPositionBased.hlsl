@@ -24,8 +24,8 @@ void Lambda(uint3 id : SV_DispatchThreadID)
     float constraint = _Densities[i] * invRho0 - 1.0;
     if (!(constraint > 0.0)) { _Pressures[i] = 0.0; return; }
     float3 xi = _Positions[i].xyz;
-    float wall, trace; float3 push;
-    SampleWalls(xi, wall, push, trace);
+    float wall; float3 push;
+    SampleWalls(xi, wall, push);
     float3 gradI = -push;
     float sumSq = 0.0;
     uint count = _NeighbourCounts[i], list = i * MAX_NEIGHBOURS;
@@ -76,8 +76,8 @@ void Correction(uint3 id : SV_DispatchThreadID)
     dx *= mOverRho0;
     if (li != 0.0)
     {
-        float wall, trace; float3 push;
-        SampleWalls(xi, wall, push, trace);
+        float wall; float3 push;
+        SampleWalls(xi, wall, push);
         dx -= li * push;
     }
     _VectorsA[i] = float4(dx, 0.0);

@@ -1,8 +1,79 @@
-// The walls of the domain box and the colliders as the SPH sums see them: a port of FluidBoundary (Sample,
-// ClampToDomain) and of the half-space integrals of SphKernels.
+// The walls of the domain box and the colliders as the SPH sums see them: a port of FluidGhostWalls (mirror planes for
+// the weakly compressible ghosts), of FluidBoundary (Sample for position-based fluids, ClampToDomain) and of the
+// half-space integrals of SphKernels.
 #ifndef SBD_FLUID_WALLS_INCLUDED
 #define SBD_FLUID_WALLS_INCLUDED
 #include "FluidColliders.hlsl"
+
+// FluidGhostWalls.MaxWalls and SameWallCosine.
+#define MAX_GHOST_WALLS 4
+#define SAME_WALL_COSINE 0.99
+
+// The walls within h of one particle: unit normals into the fluid and distances (FluidGhostWalls).
+struct GhostWalls
+{
+    float3 n[MAX_GHOST_WALLS];
+    float d[MAX_GHOST_WALLS];
+    uint count;
+};
+
+// FluidGhostWalls.Add: of two walls facing the same way only the nearer counts.
+void AddGhostWall(inout GhostWalls w, float3 n, float d)
+{
+    if (!(d >= -FLOAT_MAX)) return;
+    d = max(d, 0.0);
+    for (uint k = 0; k < w.count; k++)
+    {
+        if (!(dot(n, w.n[k]) > SAME_WALL_COSINE)) continue;
+        if (d < w.d[k]) { w.n[k] = n; w.d[k] = d; }
+        return;
+    }
+    if (w.count >= MAX_GHOST_WALLS) return;
+    w.n[w.count] = n;
+    w.d[w.count] = d;
+    w.count++;
+}
+
+// FluidGhostWalls.Near: the faces (none on a periodic axis; x, y, z, below then above), then the colliders' tangent planes.
+GhostWalls NearWalls(float3 xi)
+{
+    GhostWalls w;
+    [unroll] for (uint k = 0; k < MAX_GHOST_WALLS; k++) { w.n[k] = float3(0.0, 0.0, 0.0); w.d[k] = 0.0; }
+    w.count = 0;
+    float h = SmoothingLength;
+    [unroll] for (int a = 0; a < 3; a++)
+    {
+        if (Period[a] > 0.0) continue;
+        float3 axis = float3(0.0, 0.0, 0.0);
+        axis[a] = 1.0;
+        float below = xi[a] - DomainMin[a], above = DomainMax[a] - xi[a];
+        if (below < h) AddGhostWall(w, axis, below);
+        if (above < h) AddGhostWall(w, -axis, above);
+    }
+    for (uint c = 0; c < ColliderCount && w.count < MAX_GHOST_WALLS; c++)
+    {
+        // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+        float3 normal; float depth; bool deep;
+        if (Penetration(LoadShape(c), xi, h, normal, depth, deep)) AddGhostWall(w, normal, h - depth);
+    }
+    return w;
+}
+
+// FluidGhostWalls.Mirror: the source offset y (xⱼ − xᵢ) and its velocity mirrored through every wall of the subset (a bit
+// mask), in wall order; false when the source is not strictly on the fluid side of one of them.
+bool MirrorGhost(GhostWalls w, uint subset, inout float3 y, inout float3 v)
+{
+    for (uint k = 0; k < w.count; k++)
+    {
+        if ((subset & (1u << k)) == 0) continue;
+        float3 n = w.n[k];
+        float s = dot(y, n) + w.d[k];
+        if (!(s > 0.0)) return false;
+        y -= 2.0 * s * n;
+        v -= 2.0 * dot(v, n) * n;
+    }
+    return true;
+}
 
 // SphKernels.WallDensityFraction: ∫W dV of poly6 beyond a plane at distance d, as a fraction of ρ₀.
 float WallDensityFraction(float d)
@@ -23,19 +94,9 @@ float WallGradientMagnitude(float d)
     return 30.0 / SmoothingLength * (s4 / 4.0 - s4 * s / 5.0);
 }
 
-// SphKernels.WallGradientTrace: −∫ r·∇W dV of spiky beyond a plane at distance d, (3/2)(1 − u)⁴(2u² + 2u + 1), u = d/h.
-float WallGradientTrace(float d)
-{
-    if (!(d < SmoothingLength)) return 0.0;
-    float u = max(d, 0.0) / SmoothingLength;
-    float s = 1.0 - u;
-    float s2 = s * s;
-    return 1.5 * s2 * s2 * (2.0 * u * u + 2.0 * u + 1.0);
-}
-
-// FluidBoundary.Sample: the six faces of the domain box and the colliders (each its tangent plane at the closest
-// point): the kernel's share outside the fluid, the push Σ κG(d)·n and the gradient trace 3·(1 − Π(1 − κ_T·T(d)/3)).
-void SampleWalls(float3 x, out float densityFraction, out float3 push, out float gradientTrace)
+// FluidBoundary.Sample (position-based): the six faces of the domain box and the colliders (each its tangent plane at
+// the closest point) as static boundary matter: the kernel's share outside the fluid and the push Σ κG(d)·n.
+void SampleWalls(float3 x, out float densityFraction, out float3 push)
 {
     float h = SmoothingLength, kappa = WallScale;
     float3 below = x - DomainMin;
@@ -46,8 +107,6 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
     float inside = 1.0;
     push = float3(0.0, 0.0, 0.0);
     densityFraction = 0.0;
-    gradientTrace = 0.0;
-    float outsideTrace = 1.0, traceScale = GradientWallScale / 3.0;
     float nearest = min(min(min(below.x, below.y), below.z), min(min(above.x, above.y), above.z));
     if (nearest >= h && ColliderCount == 0) return;
     [unroll] for (int axis = 0; axis < 3; axis++)
@@ -58,13 +117,11 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
         {
             inside *= 1.0 - kappa * WallDensityFraction(dBelow);
             push += kappa * WallGradientMagnitude(dBelow) * n;
-            outsideTrace *= 1.0 - traceScale * WallGradientTrace(dBelow);
         }
         if (dAbove < h)
         {
             inside *= 1.0 - kappa * WallDensityFraction(dAbove);
             push -= kappa * WallGradientMagnitude(dAbove) * n;
-            outsideTrace *= 1.0 - traceScale * WallGradientTrace(dAbove);
         }
     }
     for (uint c = 0; c < ColliderCount; c++)
@@ -75,10 +132,8 @@ void SampleWalls(float3 x, out float densityFraction, out float3 push, out float
         float d = h - depth;
         inside *= 1.0 - kappa * WallDensityFraction(d);
         push += kappa * WallGradientMagnitude(d) * normal;
-        outsideTrace *= 1.0 - traceScale * WallGradientTrace(d);
     }
     densityFraction = 1.0 - inside;
-    gradientTrace = 3.0 * (1.0 - outsideTrace);
 }
 
 // FluidBoundary.ClampToDomain: keeps x a wall distance inside the box, removes the velocity into a face it touches and,

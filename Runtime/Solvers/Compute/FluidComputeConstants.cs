@@ -28,7 +28,7 @@ namespace SoftBodyDynamics.Solvers
         public float3 DomainMin;
         public float WallDistance;
         public float3 DomainMax;
-        /// <summary>The walls' density scale κ.</summary>
+        /// <summary>The position-based walls' density scale κ.</summary>
         public float WallScale;
         public float3 Gravity;
         /// <summary>Position-based artificial pressure k·λ₁ (m²).</summary>
@@ -91,12 +91,12 @@ namespace SoftBodyDynamics.Solvers
         public float ColliderNoSlip;
         /// <summary><see cref="FluidConstants.GradientTraceScale"/>.</summary>
         public float GradientTraceScale;
-        /// <summary><see cref="FluidConstants.GradientWallScale"/>.</summary>
-        public float GradientWallScale;
         /// <summary><see cref="FluidConstants.MaxGradientRenormalization"/>.</summary>
         public float MaxGradientRenormalization;
         /// <summary><see cref="FluidConstants.ViscosityMomentScale"/>.</summary>
         public float ViscosityMomentScale;
+        /// <summary>Unused: fills the last 16-byte row.</summary>
+        public float Padding;
 
         /// <summary>
         /// The constants for substeps of <paramref name="h"/> seconds in a step of <paramref name="dt"/> seconds, with
@@ -159,7 +159,6 @@ namespace SoftBodyDynamics.Solvers
                 FaceNoSlip = c.FaceNoSlip,
                 ColliderNoSlip = p.WallNoSlip,
                 GradientTraceScale = c.GradientTraceScale,
-                GradientWallScale = c.GradientWallScale,
                 MaxGradientRenormalization = FluidConstants.MaxGradientRenormalization,
                 ViscosityMomentScale = c.ViscosityMomentScale,
             };

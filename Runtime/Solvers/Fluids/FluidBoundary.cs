@@ -4,40 +4,29 @@ using Unity.Mathematics;
 namespace SoftBodyDynamics.Solvers
 {
     /// <summary>
-    /// Walls seen by the SPH sums: the six faces of the domain box and every collider, each treated locally as a
-    /// plane filled with fluid at rest density (a continuous version of Akinci et al. 2012's boundary particles). A wall
-    /// at distance d adds ρ₀·Φ(d) to a particle's density (<see cref="SphKernels.WallDensityFraction"/>) and its
-    /// pressure gradient pushes along the wall normal with magnitude G(d) (<see cref="SphKernels.WallGradientMagnitude"/>),
-    /// so a resting column feels the floor's support without a layer of boundary particles. Curved colliders are
-    /// approximated by their tangent plane at the closest point (error of order h/R).
+    /// The walls as position-based fluids see them (static boundary matter, <see cref="Sample"/>; weakly compressible fluids
+    /// see their mirror images instead, <see cref="FluidGhostWalls"/>), and the domain box's last word on a position: particle
+    /// centres stay at least <see cref="FluidConstants.WallDistance"/> inside (or wrap on a periodic axis), with Coulomb
+    /// friction per axis.
     /// </summary>
     public static class FluidBoundary
     {
         /// <summary>
-        /// The walls within h of <paramref name="x"/>: <paramref name="densityFraction"/> = 1 − Πₖ(1 − κΦ(dₖ)), the
-        /// kernel's share outside the fluid (exact for the octant of a box corner, where a plain sum would count the
-        /// corner three times), and <paramref name="push"/> = Σ κG(d)·n with n the unit normal out of the wall (1/m).
-        /// κ is <see cref="FluidConstants.WallScale"/>.
+        /// Position-based: the walls within h of <paramref name="x"/> as static boundary matter at rest density (Akinci et al.
+        /// 2012's boundary particles, integrated in closed form over each wall's half-space): <paramref name="densityFraction"/>
+        /// = 1 − Πₖ(1 − κΦ(dₖ)), the kernel's share outside the fluid (exact for the octant of a box corner, where a plain sum
+        /// would count the corner three times), and <paramref name="push"/> = Σ κG(d)·n with n the unit normal out of the wall
+        /// (1/m). κ is <see cref="FluidConstants.WallScale"/>. The faces of the domain box and every collider (its tangent
+        /// plane at the closest point) count.
         /// </summary>
         public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
-            out float densityFraction, out float3 push) => Sample(c, colliders, x, out densityFraction, out push, out _);
-
-        /// <summary>
-        /// <see cref="Sample(in FluidConstants, ReadOnlySpan{ColliderShape}, float3, out float, out float3)"/> and the walls'
-        /// share of the gradient trace, <paramref name="gradientTrace"/> = 3·(1 − Πₖ(1 − κ_T·T(dₖ)/3)) (<see cref="SphKernels.WallGradientTrace"/>,
-        /// κ_T = <see cref="FluidConstants.GradientWallScale"/>; combined as the density fraction is, so a corner counts once), for
-        /// <see cref="FluidConstants.GradientRenormalization"/>.
-        /// </summary>
-        public static void Sample(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 x,
-            out float densityFraction, out float3 push, out float gradientTrace)
+            out float densityFraction, out float3 push)
         {
             SphKernels k = c.Kernels;
             float3 below = x - c.Parameters.DomainMin;
             float3 above = c.Parameters.DomainMax - x;
             float inside = 1f;
             push = float3.zero;
-            gradientTrace = 0f;
-            float outsideTrace = 1f, traceScale = c.GradientWallScale / 3f;
             bool3 periodic = c.Parameters.Periodic;
             if (c.IsPeriodic)
             {
@@ -61,13 +50,11 @@ namespace SoftBodyDynamics.Solvers
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dBelow);
                     push += c.WallScale * k.WallGradientMagnitude(dBelow) * n;
-                    outsideTrace *= 1f - traceScale * k.WallGradientTrace(dBelow);
                 }
                 if (dAbove < k.H)
                 {
                     inside *= 1f - c.WallScale * k.WallDensityFraction(dAbove);
                     push -= c.WallScale * k.WallGradientMagnitude(dAbove) * n;
-                    outsideTrace *= 1f - traceScale * k.WallGradientTrace(dAbove);
                 }
             }
             for (int w = 0; w < colliders.Length; w++)
@@ -78,10 +65,8 @@ namespace SoftBodyDynamics.Solvers
                 float d = k.H - depth;
                 inside *= 1f - c.WallScale * k.WallDensityFraction(d);
                 push += c.WallScale * k.WallGradientMagnitude(d) * normal;
-                outsideTrace *= 1f - traceScale * k.WallGradientTrace(d);
             }
             densityFraction = 1f - inside;
-            gradientTrace = 3f * (1f - outsideTrace);
         }
 
         /// <summary>

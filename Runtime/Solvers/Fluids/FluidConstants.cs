@@ -18,9 +18,9 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>Closest a particle centre comes to a wall or collider surface (m): half the spacing.</summary>
         public readonly float WallDistance;
         /// <summary>
-        /// Scale κ on the continuous wall integrals so that a particle of a rest lattice half a spacing off a wall gets
-        /// exactly the density the missing lattice layers would give it (the continuum integral differs from the
-        /// lattice sum by a few per cent, which the stiff Tait law would turn into a wall pressure).
+        /// Position-based: scale κ on the continuous wall integrals (<see cref="FluidBoundary.Sample"/>) so that a particle of a
+        /// rest lattice half a spacing off a wall gets exactly the density the missing lattice layers would give it (the
+        /// continuum integral differs from the lattice sum by a few per cent).
         /// </summary>
         public readonly float WallScale;
         /// <summary>
@@ -35,12 +35,6 @@ namespace SoftBodyDynamics.Solvers
         /// κ∇·Σⱼ (m/ρᵢ)·(−rᵢⱼ·∇W), 3 for a particle of the rest lattice (<see cref="GradientRenormalization"/>).
         /// </summary>
         public readonly float GradientTraceScale;
-        /// <summary>
-        /// Scale κ_T on the walls' share of the gradient trace (<see cref="SphKernels.WallGradientTrace"/>) so that a particle of
-        /// a rest lattice half a spacing off a wall gets exactly the trace the missing lattice layers would give it, as
-        /// <see cref="WallScale"/> does for the density.
-        /// </summary>
-        public readonly float GradientWallScale;
         /// <summary>
         /// Largest <see cref="GradientRenormalization"/> (and smallest, its inverse): a few per cent covers the settled
         /// disorder of a fluid's interior (about 2.7 %, ±0.9 % between particles, on a 0.4 m column), while a particle at a free surface, whose missing
@@ -106,24 +100,20 @@ namespace SoftBodyDynamics.Solvers
             TaitStiffness = Parameters.RestDensity * Parameters.SpeedOfSound * Parameters.SpeedOfSound / FluidParameters.TaitExponent;
             WallDistance = 0.5f * Parameters.ParticleSpacing;
             float artificialShear = Parameters.ArtificialViscosity * h * Parameters.SpeedOfSound / 10f;
+            float continuum = Kernels.WallDensityFraction(WallDistance);
+            WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             EffectiveArtificialViscosity = artificialShear > 0f
                 ? Parameters.ArtificialViscosity * math.max(0f, 1f - Parameters.Viscosity / artificialShear)
                 : 0f;
-            float continuum = Kernels.WallDensityFraction(WallDistance);
-            WallScale = continuum > 0f ? MissingLayersSum(Kernels, Parameters.ParticleSpacing) / (LatticeKernelSum(Kernels, Parameters.ParticleSpacing) * continuum) : 1f;
             GradientCorrection = -3f / (Mass / Parameters.RestDensity * LatticeGradientSum(Kernels, Parameters.ParticleSpacing));
             GradientTraceScale = -GradientCorrection * Mass * Kernels.SpikyGradientCoefficient;
-            float wallTrace = Kernels.WallGradientTrace(WallDistance);
-            GradientWallScale = wallTrace > 0f
-                ? -GradientCorrection * Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.GradientDotOffset, true) / wallTrace
-                : 1f;
-            ViscosityCorrection = 2f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.ViscosityLaplacianZ2, false));
+            ViscosityCorrection = 2f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.ViscosityLaplacianZ2));
             ViscosityMomentScale = 3f / (Mass * Kernels.ViscosityLaplacianCoefficient * ViscosityCorrection);
-            float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset, false));
+            float poly6Correction = -3f / (Mass / Parameters.RestDensity * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.Poly6GradientDotOffset));
             BulkPressureScale = Parameters.RestDensity * Parameters.BulkViscosity * Parameters.SpeedOfSound * h
                 * 6f * Kernels.Poly6Coefficient * poly6Correction * Mass;
             float gradientSquares = (Mass / Parameters.RestDensity) * (Mass / Parameters.RestDensity)
-                * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.GradientSquared, false);
+                * LatticeSum(Kernels, Parameters.ParticleSpacing, LatticeTerm.GradientSquared);
             ArtificialPressureScale = Parameters.Solver == FluidSolverKind.PositionBased && gradientSquares > 0f
                 ? Parameters.ArtificialPressure / gradientSquares : 0f;
             Relaxation = 1e-3f / (Parameters.ParticleSpacing * Parameters.ParticleSpacing);
@@ -155,14 +145,14 @@ namespace SoftBodyDynamics.Solvers
         /// <summary>
         /// Weakly compressible: the factor κᵢ/κ∇ on particle i's pressure, 3 / tᵢ clamped to
         /// 1/<see cref="MaxGradientRenormalization"/>…<see cref="MaxGradientRenormalization"/>, with tᵢ = κ∇·Σⱼ (m/ρᵢ)·(−rᵢⱼ·∇W)
-        /// plus the walls' share: the trace of Bonet &amp; Lok 1999's gradient renormalization matrix, so that the
-        /// settled, slightly disordered particles differentiate a linear pressure as the rest lattice does. Applied per
-        /// particle inside the symmetric pair term (κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²), momentum stays conserved.
-        /// <paramref name="spikySum"/> is Σⱼ (h − r)²·r (m³), <paramref name="wallTrace"/> the walls' share (<see cref="FluidBoundary"/>'s Sample).
+        /// over the neighbours and the walls' ghosts: the trace of Bonet &amp; Lok 1999's gradient renormalization matrix, so
+        /// that the settled, slightly disordered particles differentiate a linear pressure as the rest lattice does. Applied
+        /// per particle inside the symmetric pair term (κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²), momentum stays conserved.
+        /// <paramref name="spikySum"/> is Σⱼ (h − r)²·r (m³).
         /// </summary>
-        public float GradientRenormalization(float spikySum, float density, float wallTrace)
+        public float GradientRenormalization(float spikySum, float density)
         {
-            float trace = GradientTraceScale * spikySum / density + wallTrace;
+            float trace = GradientTraceScale * spikySum / density;
             return math.clamp(3f / trace, 1f / MaxGradientRenormalization, MaxGradientRenormalization);
         }
 
@@ -195,18 +185,18 @@ namespace SoftBodyDynamics.Solvers
             new FluidGrid(sanitized.DomainMin, sanitized.DomainMax, sanitized.KernelRadius, sanitized.Periodic);
 
         /// <summary>Σ rₖ·∇W(rₖ) = Σ SpikyGradientScale(r)·r² over the lattice neighbours k ≠ 0 (1/m³; negative).</summary>
-        public static float LatticeGradientSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.GradientDotOffset, false);
+        public static float LatticeGradientSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.GradientDotOffset);
+
+        /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
+        public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6);
 
         /// <summary>Σ W(|k|·Δx) over the lattice points k with k.z ≥ 1: what a particle of a lattice half a spacing off a wall lacks (1/m³).</summary>
         public static float MissingLayersSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, true);
 
-        /// <summary>Σ W(|k|·Δx) over the integer lattice points k (the particle itself included), 1/m³.</summary>
-        public static float LatticeKernelSum(in SphKernels kernels, float spacing) => LatticeSum(kernels, spacing, LatticeTerm.Poly6, false);
-
         enum LatticeTerm { Poly6, GradientDotOffset, Poly6GradientDotOffset, GradientSquared, ViscosityLaplacianZ2 }
 
         /// <summary>A kernel term summed in double over the cubic lattice around a particle (only the layers k.z ≥ 1 when <paramref name="beyondWall"/>).</summary>
-        static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall)
+        static float LatticeSum(in SphKernels kernels, float spacing, LatticeTerm term, bool beyondWall = false)
         {
             int n = (int)math.ceil(kernels.H / spacing);
             double sum = 0;

@@ -88,8 +88,9 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Density ρᵢ = Σⱼ m·W_poly6(|xᵢ − xⱼ|) + ρ₀·Σ_walls Φ(d) (Müller 2003, eq. 3, walls in <see cref="FluidBoundary"/>)
-        /// and the neighbour list of each slot. Weakly compressible: the Tait pressure (Becker &amp; Teschner 2007,
+        /// Density ρᵢ = Σⱼ m·W_poly6(|xᵢ − xⱼ|) (Müller 2003, eq. 3) and the neighbour list of each slot; the walls count as the
+        /// neighbours' mirror images (weakly compressible, <see cref="FluidGhostWalls"/>) or as static boundary matter
+        /// (position-based, <see cref="FluidBoundary.Sample"/>). Weakly compressible: the Tait pressure (Becker &amp; Teschner 2007,
         /// eq. 6) p = B·((ρ/ρ₀)^γ − 1) of the density clamped to at least ρ₀ (no negative pressure at the free
         /// surface, where the kernel lacks neighbours; SPlisHSPlasH clamps the same way), stored as κᵢ·p/ρ² with κᵢ the
         /// particle's gradient renormalization (<see cref="FluidConstants.GradientRenormalization"/>).
@@ -151,7 +152,13 @@ namespace SoftBodyDynamics.Solvers
                     }
                 }
                 s.NeighbourCounts[i] = found;
-                float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters, out float wallTrace);
+                if (tait)
+                {
+                    var walls = FluidGhostWalls.Near(c, colliders, xi);
+                    if (walls.Count > 0)
+                        GhostDensity(c, walls, x, velocities, neighbours.Slice(listStart, found), xi, vi, bulk, ref sum, ref spiky, ref divergence, offset);
+                }
+                float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters);
                 if (tait)
                 {
                     float rc = math.max(rho, rho0);
@@ -159,7 +166,7 @@ namespace SoftBodyDynamics.Solvers
                     if (bulk)
                         // Bulk-viscous p_b = −ρ₀ζ·∇·vᵢ; the total stays ≥ 0 like the Tait pressure, so expansion never pulls.
                         pressure = math.max(pressure - c.BulkPressureScale * divergence / rho, 0f);
-                    s.Pressures[i] = c.GradientRenormalization(spiky, rho, wallTrace) * pressure / (rc * rc);
+                    s.Pressures[i] = c.GradientRenormalization(spiky, rho) * pressure / (rc * rc);
                 }
             }
         }
@@ -188,20 +195,53 @@ namespace SoftBodyDynamics.Solvers
                     if (q > 0f)
                         sum += q * q * q;
                 }
-                StoreDensity(c, colliders, s, i, xi, sum, ref counters, out _);
+                StoreDensity(c, colliders, s, i, xi, sum, ref counters);
             }
         }
 
         /// <summary>
-        /// ρᵢ = m·(poly6 coefficient)·Σ(h² − r²)³ + ρ₀·(wall share), stored, with the density ratio counted against the
-        /// bound; returns ρᵢ and the walls' share of the gradient trace. The end of <see cref="Density"/> and
-        /// <see cref="DensityFromNeighbours"/>.
+        /// Weakly compressible: the walls' ghosts' share of the Density pass's sums for a particle near <paramref name="walls"/>:
+        /// for every set of walls, the images of the particle itself and of each neighbour in <paramref name="list"/> add
+        /// (h² − r²)³ and (h − r)²·r, and with <paramref name="bulk"/> (vᵢ − v_g)·xᵢ_g·(h² − r²)² with the image's mirrored
+        /// velocity (free slip).
+        /// </summary>
+        static void GhostDensity<TOffset>(in FluidConstants c, in FluidGhostWalls walls, ReadOnlySpan<float3> x, ReadOnlySpan<float3> velocities,
+            ReadOnlySpan<int> list, float3 xi, float3 vi, bool bulk, ref float sum, ref float spiky, ref float divergence, TOffset offset)
+            where TOffset : struct, IPairOffset
+        {
+            float h = c.Kernels.H, h2 = c.Kernels.H2;
+            int subsets = walls.Subsets;
+            for (int subset = 1; subset <= subsets; subset++)
+                for (int m = -1; m < list.Length; m++)
+                {
+                    float3 y = m < 0 ? float3.zero : -offset.Of(xi, x[list[m]]);
+                    float3 v = m < 0 ? vi : bulk ? velocities[list[m]] : float3.zero;
+                    if (!walls.Mirror(subset, ref y, ref v))
+                        continue;
+                    float q = h2 - (y.x * y.x + y.y * y.y + y.z * y.z);
+                    if (!(q > 0f))
+                        continue;
+                    sum += q * q * q;
+                    float distance = math.sqrt(h2 - q);
+                    float hr = h - distance;
+                    spiky += hr * hr * distance;
+                    if (bulk)
+                        divergence -= math.dot(vi - v, y) * (q * q);
+                }
+        }
+
+        /// <summary>
+        /// ρᵢ = m·(poly6 coefficient)·Σ(h² − r²)³, the weakly compressible walls' ghosts included in the sum, plus for
+        /// position-based fluids ρ₀·(the walls' share, <see cref="FluidBoundary.Sample"/>), stored, with the density ratio counted
+        /// against the bound; returns ρᵢ. The end of <see cref="Density"/> and <see cref="DensityFromNeighbours"/>.
         /// </summary>
         static float StoreDensity(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidScratch s, int i, float3 xi,
-            float kernelSum, ref FluidPassCounters counters, out float wallTrace)
+            float kernelSum, ref FluidPassCounters counters)
         {
             float rho0 = c.Parameters.RestDensity;
-            FluidBoundary.Sample(c, colliders, xi, out float wall, out _, out wallTrace);
+            float wall = 0f;
+            if (c.Parameters.Solver == FluidSolverKind.PositionBased)
+                FluidBoundary.Sample(c, colliders, xi, out wall, out _);
             float rho = c.Mass * c.Kernels.Poly6Coefficient * kernelSum + rho0 * wall;
             s.Densities[i] = rho;
             float ratio = rho / rho0;
@@ -236,9 +276,8 @@ namespace SoftBodyDynamics.Solvers
         /// Accelerations and the velocity update vᵢ += h·aᵢ. Weakly compressible adds gravity, the symmetric pressure
         /// term −Σⱼ m·(κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²)·∇W_spiky (Müller 2003, eq. 10 in its momentum-conserving form; Monaghan 1992;
         /// κ the per-particle renormalization stored with the pressure)
-        /// with Monaghan's artificial viscosity Πᵢⱼ (Becker &amp; Teschner 2007, eq. 11) and the walls'
-        /// ρ₀·(κᵢpᵢ/ρᵢ²)·Σ G(d)·n (Akinci 2012, eq. 9, continuous) with their mirrored neighbours' tangential share
-        /// (<see cref="MirroredPressure{TOffset}(in FluidConstants, ReadOnlySpan{ColliderShape}, ReadOnlySpan{float3}, ReadOnlySpan{float}, ReadOnlySpan{int}, float3, float, TOffset)"/>). Both solvers add the cohesion of
+        /// with Monaghan's artificial viscosity Πᵢⱼ (Becker &amp; Teschner 2007, eq. 11), the walls' ghosts taking part in the
+        /// sum as neighbours (<see cref="FluidGhostWalls"/>). Both solvers add the cohesion of
         /// <see cref="FluidParameters.Cohesion"/>. Writes vᵢ + h·aᵢ to <paramref name="destination"/> (neighbours'
         /// velocities are read). Coincident particles (r = 0) are pushed apart along a direction fixed by their ids.
         /// </summary>
@@ -271,8 +310,8 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// Weakly compressible part of <see cref="Forces"/> for slot <paramref name="i"/>: gravity, the symmetric pressure term
-        /// with artificial viscosity, and the walls' push.
+        /// Weakly compressible part of <see cref="Forces"/> for slot <paramref name="i"/>: gravity and the symmetric pressure term
+        /// with artificial viscosity over the neighbours and the walls' ghosts.
         /// </summary>
         static float3 PressureAcceleration<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, int i,
             TOffset offset) where TOffset : struct, IPairOffset
@@ -310,69 +349,57 @@ namespace SoftBodyDynamics.Solvers
                     // ∇W at r → 0⁺ has magnitude 45/(πh⁶)·h²; the direction comes from the pair's ids (antisymmetric).
                     sum += scale * k.H2 * CoincidentDirection(p.Ids[i], p.Ids[j]);
             }
-            sum += MirroredPressure(c, colliders, x, pressures, list, xi, pi, offset);
+            var walls = FluidGhostWalls.Near(c, colliders, xi);
+            if (walls.Count > 0)
+                sum += GhostPressure(c, walls, p, s, list, xi, vi, pi, rhoi, alphaCh, offset);
             sum *= -c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
-            FluidBoundary.Sample(c, colliders, xi, out _, out float3 push);
-            return prm.Gravity + sum + prm.RestDensity * pi * push;
+            return prm.Gravity + sum;
         }
 
         /// <summary>
-        /// The tangential part of the pressure term from the neighbours mirrored through each wall within h, the domain's
-        /// faces and the colliders' tangent planes (ghost fluid, Colagrossi &amp; Landrini 2003): the ghost of j at normal
-        /// distance d + tⱼ from i (tⱼ = d + (xⱼ − xᵢ)·n &gt; 0, d = i's distance to the wall) carries pⱼ, so
-        /// Σ_g (κᵢpᵢ/ρᵢ² + κⱼpⱼ/ρⱼ²)·(h − r)²/r·r_t with r_t the tangential part of rᵢⱼ. The walls' push
-        /// (<see cref="FluidBoundary"/>) holds the normal part; this holds the pressure gradient along the wall that the
-        /// missing neighbours would carry, so a column's weight is not left to the particles away from the walls. In
-        /// <see cref="PressureAcceleration"/>'s units, before its factor −m·C_spiky·κ∇.
+        /// The walls' ghosts' share of <see cref="PressureAcceleration"/>'s pair sum for a particle near <paramref name="walls"/>:
+        /// the images of the particle and of each neighbour through every set of walls, each carrying its source's
+        /// κⱼpⱼ/ρⱼ² extrapolated hydrostatically, max(0, κⱼpⱼ/ρⱼ² + g·(x_g − xⱼ)/ρⱼ) (κⱼ ≈ 1 in the extrapolation; Adami et al.
+        /// 2012, eq. 27) where pⱼ &gt; 0 and 0 elsewhere, its density and its mirrored velocity for the artificial viscosity.
+        /// In the pair sum's units, before its factor −m·C_spiky·κ∇.
         /// </summary>
-        static float3 MirroredPressure<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<float3> x,
-            ReadOnlySpan<float> pressures, ReadOnlySpan<int> list, float3 xi, float pi, TOffset offset) where TOffset : struct, IPairOffset
+        static float3 GhostPressure<TOffset>(in FluidConstants c, in FluidGhostWalls walls, FluidParticles p, FluidScratch s, ReadOnlySpan<int> list,
+            float3 xi, float3 vi, float pi, float rhoi, float alphaCh, TOffset offset) where TOffset : struct, IPairOffset
         {
-            float hk = c.Kernels.H;
-            float3 below = xi - c.Parameters.DomainMin, above = c.Parameters.DomainMax - xi;
+            SphKernels k = c.Kernels;
+            float3 g = c.Parameters.Gravity;
+            float rho0 = c.Parameters.RestDensity, eta2 = 0.01f * k.H2, minDistance = 1e-6f * k.H;
+            ReadOnlySpan<float3> x = p.Positions, velocities = p.Velocities;
+            ReadOnlySpan<float> pressures = s.Pressures, densities = s.Densities;
             float3 sum = float3.zero;
-            for (int a = 0; a < 3; a++)
-            {
-                // A periodic axis has no faces.
-                if (c.Period[a] > 0f)
-                    continue;
-                float3 axis = float3.zero;
-                axis[a] = 1f;
-                if (below[a] < hk)
-                    sum += MirroredPressure(x, pressures, list, xi, pi, axis, below[a], hk, offset);
-                if (above[a] < hk)
-                    sum += MirroredPressure(x, pressures, list, xi, pi, -axis, above[a], hk, offset);
-            }
-            for (int w = 0; w < colliders.Length; w++)
-                // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
-                if (ParticleCollision.Penetration(colliders[w], xi, hk, out float3 normal, out float depth))
-                    sum += MirroredPressure(x, pressures, list, xi, pi, normal, hk - depth, hk, offset);
-            return sum;
-        }
-
-        /// <summary>One wall of <see cref="MirroredPressure{TOffset}(in FluidConstants, ReadOnlySpan{ColliderShape}, ReadOnlySpan{float3}, ReadOnlySpan{float}, ReadOnlySpan{int}, float3, float, TOffset)"/>: unit normal n into the fluid at distance d.</summary>
-        static float3 MirroredPressure<TOffset>(ReadOnlySpan<float3> x, ReadOnlySpan<float> pressures, ReadOnlySpan<int> list,
-            float3 xi, float pi, float3 n, float d, float h, TOffset offset) where TOffset : struct, IPairOffset
-        {
-            d = math.max(d, 0f);
-            float3 sum = float3.zero;
-            for (int m = 0; m < list.Length; m++)
-            {
-                int j = list[m];
-                float3 rij = offset.Of(xi, x[j]);
-                float along = -math.dot(rij, n);
-                float t = d + along;
-                if (!(t > 0f))
-                    continue;
-                float3 tangential = rij + along * n;
-                float normal = d + t;
-                float r2 = math.lengthsq(tangential) + normal * normal;
-                if (!(r2 < h * h))
-                    continue;
-                float r = math.sqrt(r2);
-                float hr = h - r;
-                sum += ((pi + pressures[j]) * hr * hr / r) * tangential;
-            }
+            int subsets = walls.Subsets;
+            for (int subset = 1; subset <= subsets; subset++)
+                for (int m = -1; m < list.Length; m++)
+                {
+                    int j = m < 0 ? -1 : list[m];
+                    float3 source = j < 0 ? float3.zero : -offset.Of(xi, x[j]);
+                    float3 y = source;
+                    float3 v = j < 0 ? vi : velocities[j];
+                    if (!walls.Mirror(subset, ref y, ref v))
+                        continue;
+                    float r2 = math.dot(y, y);
+                    if (!(r2 < k.H2))
+                        continue;
+                    float r = math.sqrt(r2);
+                    if (!(r > minDistance))
+                        continue;
+                    float rhoj = j < 0 ? rhoi : densities[j];
+                    // Extrapolated only from a source under pressure: a lone particle or a thin film (p = 0) rests on the wall
+                    // through its contact (FluidBoundary.ClampToDomain, ContactProjection), where the friction acts.
+                    float pj = j < 0 ? pi : pressures[j];
+                    float ghost = pj > 0f ? math.max(pj + math.dot(g, y - source) / math.max(rhoj, rho0), 0f) : 0f;
+                    float3 rig = -y;
+                    float scale = pi + ghost;
+                    float approach = math.min(math.dot(vi - v, rig), 0f);
+                    scale -= alphaCh * approach / ((rhoi + rhoj) * (r2 + eta2));
+                    float hr = k.H - r;
+                    sum += (scale * hr * hr / r) * rig;
+                }
             return sum;
         }
 

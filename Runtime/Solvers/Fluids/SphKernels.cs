@@ -95,21 +95,6 @@ namespace SoftBodyDynamics.Solvers
         }
 
         /// <summary>
-        /// −∫ r·∇W dV of the spiky kernel over the half-space beyond a plane at distance <paramref name="d"/>, r the offset
-        /// from the wall's points to the kernel's centre (dimensionless): the wall's share of the trace of Σⱼ Vⱼ·rᵢⱼ⊗∇W, which
-        /// is 3 for a full neighbourhood. 2π·∫_d^h (45/(πh⁶))(h − r)²·r²·(r − d) dr = (3/2)(1 − u)⁴(2u² + 2u + 1), u = d/h.
-        /// </summary>
-        public float WallGradientTrace(float d)
-        {
-            if (!(d < H))
-                return 0f;
-            float u = math.max(d, 0f) / H;
-            float s = 1f - u;
-            float s2 = s * s;
-            return 1.5f * s2 * s2 * (2f * u * u + 2f * u + 1f);
-        }
-
-        /// <summary>
         /// |∫ ∇W dV| of the spiky kernel over the half-space beyond a plane at distance <paramref name="d"/> (1/m):
         /// 2π·∫_d^h W_spiky(r)·r dr = (30/h)·((1 − u)⁴/4 − (1 − u)⁵/5) with u = d/h: the derivative with respect to d
         /// of the spiky kernel's half-space integral. The gradient points from the particle into the wall.

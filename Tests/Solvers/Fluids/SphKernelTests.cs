@@ -76,21 +76,6 @@ namespace SoftBodyDynamics.Tests.Solvers
             Assert.That(k.WallGradientMagnitude((float)d), Is.EqualTo(-sum).Within(1e-3 * 1.5 / k_H));
         }
 
-        [TestCase(0.0)]
-        [TestCase(0.3)]
-        [TestCase(0.7)]
-        public void WallGradientTrace_IsTheHalfSpaceIntegralOfTheSpikyTrace(double u)
-        {
-            // −∫_{z>d} r·∇W dV with r from the wall's point to the centre: r·∇W = (dW/dr)·r.
-            var k = new SphKernels(k_H);
-            double d = u * k_H;
-            double sum = -HalfSpaceIntegral(d, (r, z) => SpikyDerivative(r) * r);
-            // A smooth integrand of scale 3/2: the midpoint rule on 600² cells is good to ~1e-5 relative.
-            Assert.That(k.WallGradientTrace((float)d), Is.EqualTo(sum).Within(1e-4 * 1.5));
-            if (u == 0.0)
-                Assert.That(k.WallGradientTrace(0f), Is.EqualTo(1.5f).Within(1e-6), "half the full neighbourhood's trace 3");
-        }
-
         [Test]
         public void Kernels_AreZeroOutsideTheSupportAndForNaN()
         {

@@ -1,0 +1,130 @@
+using System;
+using Unity.Mathematics;
+
+namespace SoftBodyDynamics.Solvers
+{
+    /// <summary>
+    /// The walls within a kernel radius of one particle as mirror planes: the domain's faces (none on a periodic axis) and
+    /// each collider's tangent plane at its closest point, at most <see cref="MaxWalls"/>. The SPH sums see beyond each
+    /// wall the particle's neighbours mirrored through it (ghost fluid, Colagrossi &amp; Landrini 2003; Morris et al. 1997),
+    /// and through every set of walls at once, so that an edge or a corner is filled by the double and triple images. A
+    /// ghost carries its source's density, its velocity mirrored (free slip) and its pressure extrapolated hydrostatically,
+    /// pⱼ + ρⱼ·g·(x_g − xⱼ) (Adami et al. 2012, eq. 27, for walls at rest), so that a fluid at rest differentiates its pressure
+    /// beside a wall as it does inside. A rest lattice half a spacing off the walls continues itself in its images: its
+    /// density, trace and pressure gradient are exactly the interior's, corners included.
+    /// Offsets are relative to the particle: a source at y = xⱼ − xᵢ (the nearest image on periodic axes).
+    /// </summary>
+    public struct FluidGhostWalls
+    {
+        /// <summary>Most walls one particle mirrors through (a box corner has three; one more for a collider).</summary>
+        public const int MaxWalls = 4;
+
+        float3 m_N0, m_N1, m_N2, m_N3;
+        float m_D0, m_D1, m_D2, m_D3;
+        /// <summary>Walls found, 0 … <see cref="MaxWalls"/>.</summary>
+        public int Count;
+
+        /// <summary>The non-empty sets of walls, as bit masks 1 … <see cref="Subsets"/>; each gives one image of every source.</summary>
+        public int Subsets => (1 << Count) - 1;
+
+        /// <summary>Unit normal into the fluid of wall <paramref name="k"/>.</summary>
+        public float3 Normal(int k) => k == 0 ? m_N0 : k == 1 ? m_N1 : k == 2 ? m_N2 : m_N3;
+
+        /// <summary>Distance (m, ≥ 0) from the particle to wall <paramref name="k"/>.</summary>
+        public float Distance(int k) => k == 0 ? m_D0 : k == 1 ? m_D1 : k == 2 ? m_D2 : m_D3;
+
+        /// <summary>
+        /// The walls within h of <paramref name="xi"/>: faces first (x, y, z; below, then above), then the colliders in order, the
+        /// first <see cref="MaxWalls"/> found; of two walls facing the same way (<see cref="SameWallCosine"/>) only the nearer. A
+        /// particle inside a collider or beyond a face is taken at the wall (d = 0).
+        /// </summary>
+        public static FluidGhostWalls Near(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, float3 xi)
+        {
+            var walls = new FluidGhostWalls();
+            float h = c.Kernels.H;
+            float3 lo = c.Parameters.DomainMin, hi = c.Parameters.DomainMax;
+            for (int a = 0; a < 3; a++)
+            {
+                // A periodic axis has no faces.
+                if (c.Period[a] > 0f)
+                    continue;
+                float3 axis = float3.zero;
+                axis[a] = 1f;
+                float below = xi[a] - lo[a], above = hi[a] - xi[a];
+                if (below < h)
+                    walls.Add(axis, below);
+                if (above < h)
+                    walls.Add(-axis, above);
+            }
+            for (int w = 0; w < colliders.Length && walls.Count < MaxWalls; w++)
+                // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
+                if (ParticleCollision.Penetration(colliders[w], xi, h, out float3 normal, out float depth))
+                    walls.Add(normal, h - depth);
+            return walls;
+        }
+
+        /// <summary>Cosine above which two walls face the same way: the fluid sees only the nearer (a collider lying on a face counts once).</summary>
+        public const float SameWallCosine = 0.99f;
+
+        void Add(float3 n, float d)
+        {
+            if (!(d >= -float.MaxValue))
+                return;
+            d = math.max(d, 0f);
+            for (int k = 0; k < Count; k++)
+            {
+                if (!(math.dot(n, Normal(k)) > SameWallCosine))
+                    continue;
+                if (d < Distance(k))
+                    Set(k, n, d);
+                return;
+            }
+            if (Count >= MaxWalls)
+                return;
+            Set(Count, n, d);
+            Count++;
+        }
+
+        void Set(int k, float3 n, float d)
+        {
+            switch (k)
+            {
+                case 0: m_N0 = n; m_D0 = d; break;
+                case 1: m_N1 = n; m_D1 = d; break;
+                case 2: m_N2 = n; m_D2 = d; break;
+                default: m_N3 = n; m_D3 = d; break;
+            }
+        }
+
+        /// <summary>
+        /// Mirrors the source offset <paramref name="y"/> (xⱼ − xᵢ) and its velocity <paramref name="v"/> through every wall of
+        /// <paramref name="subset"/>, in wall order: y ← y − 2·s·n with s = y·n + d its height above the wall, v ← v − 2(v·n)·n.
+        /// False when the source is not strictly on the fluid side of one of them (its image would lie in the fluid).
+        /// </summary>
+        public bool Mirror(int subset, ref float3 y, ref float3 v)
+        {
+            for (int k = 0; k < Count; k++)
+            {
+                if ((subset & (1 << k)) == 0)
+                    continue;
+                float3 n = Normal(k);
+                float s = math.dot(y, n) + Distance(k);
+                if (!(s > 0f))
+                    return false;
+                y -= 2f * s * n;
+                v -= 2f * math.dot(v, n) * n;
+            }
+            return true;
+        }
+
+        /// <summary>
+        /// The source offset <paramref name="y"/> mirrored through every wall of <paramref name="subset"/>
+        /// (<see cref="Mirror(int, ref float3, ref float3)"/> without a velocity).
+        /// </summary>
+        public bool Mirror(int subset, ref float3 y)
+        {
+            float3 v = float3.zero;
+            return Mirror(subset, ref y, ref v);
+        }
+    }
+}
