@@ -11,8 +11,8 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
     /// measures: the interior pressure's L2 error against ρ₀·g·(H − y) and the error against −ρ₀g of its least-squares
     /// gradient averaged over the last second's 60 frames (one frame's fit moves by several per cent with the particles'
     /// slow rearrangement and acoustic noise) and against −ρ̄g with ρ̄ the interior's mean density (the weakly compressible
-    /// fluid's own analytic gradient, dp/dy = −ρ(p)·g), where the last frame's line reaches zero and the particles' scatter about it (interior = at least two kernel radii 2h from the walls, the floor and the surface, where the kernel's
-    /// deficiency is expected: 128 particles; weakly compressible only, position-based fluids have no pressure), the mean interior
+    /// fluid's own analytic gradient, dp/dy = −ρ(p)·g), where the last frame's line reaches zero and the particles' scatter about it (interior = at least two kernel radii 2h from the walls, the floor and the surface, where the half-space walls of
+    /// earlier releases left the kernel deficient; kept so that the rows compare: 128 particles; weakly compressible only, position-based fluids have no pressure), the mean interior
     /// density error, the kinetic energy per particle mass and how far the surface moved over the last 90 % of the
     /// run. The settled state is chaotic: a change as small as water's ν × 1.01 moves the averaged slope by several per
     /// cent, so an ensemble of columns whose ν is scaled by 1 + k/100 (k = 0 … members − 1; water's ν is 1/2500 of the
