@@ -116,15 +116,5 @@ namespace SoftBodyDynamics.Solvers
             }
             return true;
         }
-
-        /// <summary>
-        /// The source offset <paramref name="y"/> mirrored through every wall of <paramref name="subset"/>
-        /// (<see cref="Mirror(int, ref float3, ref float3)"/> without a velocity).
-        /// </summary>
-        public bool Mirror(int subset, ref float3 y)
-        {
-            float3 v = float3.zero;
-            return Mirror(subset, ref y, ref v);
-        }
     }
 }
