@@ -16,8 +16,10 @@ namespace SoftBodyDynamics.Solvers
     }
 
     /// <summary>
-    /// A static primitive collider in world space (a component or a blob element in ECS). Build it
-    /// with the factory methods; the fields a kind does not use stay zero.
+    /// A primitive collider in world space (a component or a blob element in ECS). Build it with the factory
+    /// methods; the fields a kind does not use stay zero. It is static unless given a velocity (<see cref="Moving"/>):
+    /// fluids then see its surface move (their walls' ghosts take its normal velocity); soft bodies collide with its
+    /// placement of the step.
     /// </summary>
     public struct ColliderShape
     {
@@ -32,6 +34,22 @@ namespace SoftBodyDynamics.Solvers
         public float3 HalfExtents;
         /// <summary>Sphere or capsule radius (m, &gt; 0).</summary>
         public float Radius;
+        /// <summary>Velocity of the solid (m/s); zero for a static collider.</summary>
+        public float3 Velocity;
+        /// <summary>Angular velocity of the solid about <see cref="Center"/> (rad/s); zero for a static collider.</summary>
+        public float3 AngularVelocity;
+
+        /// <summary>Velocity (m/s) of the solid's point at <paramref name="point"/> (world): v + ω × (point − centre).</summary>
+        public float3 VelocityAt(float3 point) => Velocity + math.cross(AngularVelocity, point - Center);
+
+        /// <summary>The same collider moving with <paramref name="velocity"/> (m/s) and <paramref name="angularVelocity"/> (rad/s, about the centre).</summary>
+        public ColliderShape Moving(float3 velocity, float3 angularVelocity)
+        {
+            ColliderShape c = this;
+            c.Velocity = velocity;
+            c.AngularVelocity = angularVelocity;
+            return c;
+        }
 
         public static ColliderShape Plane(float3 point, float3 normal) => new ColliderShape
             { Type = ColliderShapeType.Plane, Center = point, Axis = math.normalizesafe(normal, new float3(0f, 1f, 0f)), Rotation = quaternion.identity };

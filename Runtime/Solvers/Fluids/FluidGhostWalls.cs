@@ -8,7 +8,8 @@ namespace SoftBodyDynamics.Solvers
     /// each collider's tangent plane at its closest point, at most <see cref="MaxWalls"/>. The SPH sums see beyond each
     /// wall the particle's neighbours mirrored through it (ghost fluid, Colagrossi &amp; Landrini 2003; Morris et al. 1997),
     /// and through every set of walls at once, so that an edge or a corner is filled by the double and triple images. A
-    /// ghost carries its source's density, its velocity mirrored (free slip) and its pressure extrapolated hydrostatically,
+    /// ghost carries its source's density, its velocity mirrored in the wall's frame (free slip: the normal part relative to
+    /// a moving collider's surface reversed) and its pressure extrapolated hydrostatically,
     /// pⱼ + ρⱼ·g·(x_g − xⱼ) (Adami et al. 2012, eq. 27, for walls at rest), so that a fluid at rest differentiates its pressure
     /// beside a wall as it does inside. A rest lattice half a spacing off the walls continues itself in its images: its
     /// density, trace and pressure gradient are exactly the interior's, corners included.
@@ -21,6 +22,8 @@ namespace SoftBodyDynamics.Solvers
 
         float3 m_N0, m_N1, m_N2, m_N3;
         float m_D0, m_D1, m_D2, m_D3;
+        float m_U0, m_U1, m_U2, m_U3;
+        int m_C0, m_C1, m_C2, m_C3;
         /// <summary>Walls found, 0 … <see cref="MaxWalls"/>.</summary>
         public int Count;
 
@@ -32,6 +35,22 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>Distance (m, ≥ 0) from the particle to wall <paramref name="k"/>.</summary>
         public float Distance(int k) => k == 0 ? m_D0 : k == 1 ? m_D1 : k == 2 ? m_D2 : m_D3;
+
+        /// <summary>Speed (m/s) of wall <paramref name="k"/> along its normal: a moving collider's surface velocity there, 0 for a face.</summary>
+        public float NormalSpeed(int k) => k == 0 ? m_U0 : k == 1 ? m_U1 : k == 2 ? m_U2 : m_U3;
+
+        /// <summary>Index in the colliders of wall <paramref name="k"/>, −1 for a domain face.</summary>
+        public int Collider(int k) => k == 0 ? m_C0 : k == 1 ? m_C1 : k == 2 ? m_C2 : m_C3;
+
+        /// <summary>Bit mask of the walls that are colliders with index ≥ <paramref name="first"/> (the moving ones of a coupled step).</summary>
+        public int CollidersFrom(int first)
+        {
+            int mask = 0;
+            for (int k = 0; k < Count; k++)
+                if (Collider(k) >= first)
+                    mask |= 1 << k;
+            return mask;
+        }
 
         /// <summary>
         /// The walls within h of <paramref name="xi"/>: faces first (x, y, z; below, then above), then the colliders in order, the
@@ -52,21 +71,24 @@ namespace SoftBodyDynamics.Solvers
                 axis[a] = 1f;
                 float below = xi[a] - lo[a], above = hi[a] - xi[a];
                 if (below < h)
-                    walls.Add(axis, below);
+                    walls.Add(axis, below, 0f, -1);
                 if (above < h)
-                    walls.Add(-axis, above);
+                    walls.Add(-axis, above, 0f, -1);
             }
             for (int w = 0; w < colliders.Length && walls.Count < MaxWalls; w++)
                 // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
                 if (ParticleCollision.Penetration(colliders[w], xi, h, out float3 normal, out float depth))
-                    walls.Add(normal, h - depth);
+                {
+                    float d = h - depth;
+                    walls.Add(normal, d, math.dot(colliders[w].VelocityAt(xi - d * normal), normal), w);
+                }
             return walls;
         }
 
         /// <summary>Cosine above which two walls face the same way: the fluid sees only the nearer (a collider lying on a face counts once).</summary>
         public const float SameWallCosine = 0.99f;
 
-        void Add(float3 n, float d)
+        void Add(float3 n, float d, float normalSpeed, int collider)
         {
             if (!(d >= -float.MaxValue))
                 return;
@@ -76,29 +98,30 @@ namespace SoftBodyDynamics.Solvers
                 if (!(math.dot(n, Normal(k)) > SameWallCosine))
                     continue;
                 if (d < Distance(k))
-                    Set(k, n, d);
+                    Set(k, n, d, normalSpeed, collider);
                 return;
             }
             if (Count >= MaxWalls)
                 return;
-            Set(Count, n, d);
+            Set(Count, n, d, normalSpeed, collider);
             Count++;
         }
 
-        void Set(int k, float3 n, float d)
+        void Set(int k, float3 n, float d, float u, int collider)
         {
             switch (k)
             {
-                case 0: m_N0 = n; m_D0 = d; break;
-                case 1: m_N1 = n; m_D1 = d; break;
-                case 2: m_N2 = n; m_D2 = d; break;
-                default: m_N3 = n; m_D3 = d; break;
+                case 0: m_N0 = n; m_D0 = d; m_U0 = u; m_C0 = collider; break;
+                case 1: m_N1 = n; m_D1 = d; m_U1 = u; m_C1 = collider; break;
+                case 2: m_N2 = n; m_D2 = d; m_U2 = u; m_C2 = collider; break;
+                default: m_N3 = n; m_D3 = d; m_U3 = u; m_C3 = collider; break;
             }
         }
 
         /// <summary>
         /// Mirrors the source offset <paramref name="y"/> (xⱼ − xᵢ) and its velocity <paramref name="v"/> through every wall of
-        /// <paramref name="subset"/>, in wall order: y ← y − 2·s·n with s = y·n + d its height above the wall, v ← v − 2(v·n)·n.
+        /// <paramref name="subset"/>, in wall order: y ← y − 2·s·n with s = y·n + d its height above the wall, v ← v − 2(v·n − u)·n
+        /// with u the wall's <see cref="NormalSpeed"/>.
         /// False when the source is not strictly on the fluid side of one of them (its image would lie in the fluid).
         /// </summary>
         public bool Mirror(int subset, ref float3 y, ref float3 v)
@@ -112,7 +135,7 @@ namespace SoftBodyDynamics.Solvers
                 if (!(s > 0f))
                     return false;
                 y -= 2f * s * n;
-                v -= 2f * math.dot(v, n) * n;
+                v -= 2f * (math.dot(v, n) - NormalSpeed(k)) * n;
             }
             return true;
         }

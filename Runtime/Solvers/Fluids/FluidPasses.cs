@@ -351,9 +351,56 @@ namespace SoftBodyDynamics.Solvers
             }
             var walls = FluidGhostWalls.Near(c, colliders, xi);
             if (walls.Count > 0)
-                sum += GhostPressure(c, walls, p, s, list, xi, vi, pi, rhoi, alphaCh, offset);
+                sum += GhostPressure(c, walls, p, s, list, xi, vi, pi, rhoi, alphaCh, 0, 0, offset);
             sum *= -c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
             return prm.Gravity + sum;
+        }
+
+        /// <summary>
+        /// Weakly compressible: the force (N) each collider from index <paramref name="firstMoving"/> on takes from the fluid
+        /// through its walls' ghosts, summed over slots [start, end) in slot order into <paramref name="forces"/> (one per such
+        /// collider, added to), and its torque (N·m) about the collider's centre, the force acting at the particle, into
+        /// <paramref name="torques"/>: for particle i, −mᵢ times the ghosts' share of its pressure acceleration
+        /// (<see cref="PressureAcceleration"/>, artificial viscosity included), a ghost through several moving walls split
+        /// evenly among them. Reads what the Forces pass read; run it before the velocities change.
+        /// </summary>
+        public static void MovingColliderLoads(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, int firstMoving, FluidParticles p,
+            FluidScratch s, int start, int end, Span<float3> forces, Span<float3> torques)
+        {
+            if (c.Parameters.Solver != FluidSolverKind.WeaklyCompressible || firstMoving >= colliders.Length)
+                return;
+            if (c.IsPeriodic)
+                MovingColliderLoads(c, colliders, firstMoving, p, s, start, end, forces, torques, new NearestImageOffset(c));
+            else
+                MovingColliderLoads(c, colliders, firstMoving, p, s, start, end, forces, torques, default(DirectOffset));
+        }
+
+        static void MovingColliderLoads<TOffset>(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, int firstMoving, FluidParticles p,
+            FluidScratch s, int start, int end, Span<float3> forces, Span<float3> torques, TOffset offset) where TOffset : struct, IPairOffset
+        {
+            SphKernels k = c.Kernels;
+            float alphaCh = 2f * c.EffectiveArtificialViscosity * c.Parameters.SpeedOfSound * k.H;
+            // Force on the collider = −m·(ghost acceleration) = m²·C_spiky·κ∇·(ghost pair sum).
+            float scale = c.Mass * c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
+            for (int i = start; i < end; i++)
+            {
+                float3 xi = p.Positions[i];
+                var walls = FluidGhostWalls.Near(c, colliders, xi);
+                int moving = walls.CollidersFrom(firstMoving);
+                if (moving == 0)
+                    continue;
+                ReadOnlySpan<int> list = s.Neighbours.Slice(i * FluidScratch.MaxNeighbours, s.NeighbourCounts[i]);
+                for (int w = 0; w < walls.Count; w++)
+                {
+                    if ((moving & (1 << w)) == 0)
+                        continue;
+                    float3 f = scale * GhostPressure(c, walls, p, s, list, xi, p.Velocities[i], s.Pressures[i], s.Densities[i], alphaCh,
+                        1 << w, moving, offset);
+                    int slot = walls.Collider(w) - firstMoving;
+                    forces[slot] += f;
+                    torques[slot] += math.cross(xi - colliders[walls.Collider(w)].Center, f);
+                }
+            }
         }
 
         /// <summary>
@@ -361,10 +408,11 @@ namespace SoftBodyDynamics.Solvers
         /// the images of the particle and of each neighbour through every set of walls, each carrying its source's
         /// κⱼpⱼ/ρⱼ² extrapolated hydrostatically, max(0, κⱼpⱼ/ρⱼ² + g·(x_g − xⱼ)/ρⱼ) (κⱼ ≈ 1 in the extrapolation; Adami et al.
         /// 2012, eq. 27) where pⱼ &gt; 0 and 0 elsewhere, its density and its mirrored velocity for the artificial viscosity.
-        /// In the pair sum's units, before its factor −m·C_spiky·κ∇.
+        /// In the pair sum's units, before its factor −m·C_spiky·κ∇. With <paramref name="only"/> ≠ 0, only the images through a
+        /// set of walls that includes <paramref name="only"/>'s, each weighted 1/(the set's walls in <paramref name="shared"/>).
         /// </summary>
         static float3 GhostPressure<TOffset>(in FluidConstants c, in FluidGhostWalls walls, FluidParticles p, FluidScratch s, ReadOnlySpan<int> list,
-            float3 xi, float3 vi, float pi, float rhoi, float alphaCh, TOffset offset) where TOffset : struct, IPairOffset
+            float3 xi, float3 vi, float pi, float rhoi, float alphaCh, int only, int shared, TOffset offset) where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
             float3 g = c.Parameters.Gravity;
@@ -374,6 +422,10 @@ namespace SoftBodyDynamics.Solvers
             float3 sum = float3.zero;
             int subsets = walls.Subsets;
             for (int subset = 1; subset <= subsets; subset++)
+            {
+                if (only != 0 && (subset & only) == 0)
+                    continue;
+                float3 part = float3.zero;
                 for (int m = -1; m < list.Length; m++)
                 {
                     int j = m < 0 ? -1 : list[m];
@@ -398,9 +450,24 @@ namespace SoftBodyDynamics.Solvers
                     float approach = math.min(math.dot(vi - v, rig), 0f);
                     scale -= alphaCh * approach / ((rhoi + rhoj) * (r2 + eta2));
                     float hr = k.H - r;
-                    sum += (scale * hr * hr / r) * rig;
+                    if (only == 0)
+                        sum += (scale * hr * hr / r) * rig;
+                    else
+                        part += (scale * hr * hr / r) * rig;
                 }
+                if (only != 0)
+                    sum += part / WallCount(subset & shared);
+            }
             return sum;
+        }
+
+        /// <summary>Walls in a set (bits of <paramref name="mask"/>; at most <see cref="FluidGhostWalls.MaxWalls"/>).</summary>
+        static int WallCount(int mask)
+        {
+            int n = 0;
+            for (int k = 0; k < FluidGhostWalls.MaxWalls; k++)
+                n += (mask >> k) & 1;
+            return n;
         }
 
         /// <summary>Flocking part of <see cref="Forces"/>: steer toward the kernel-weighted neighbour centroid, and away from neighbours closer than Δx.</summary>
@@ -826,6 +893,43 @@ namespace SoftBodyDynamics.Solvers
             int n = end - start;
             counters.Contacts += ContactProjection.Project(s.Previous.Slice(start, n), p.Positions.Slice(start, n),
                 p.Velocities.Slice(start, n), s.VectorsA.Slice(start, n), colliders, settings, h);
+        }
+
+        /// <summary>
+        /// The moving colliders (index ≥ <paramref name="firstMoving"/>) for slots [start, end), after <see cref="Collide"/>: a
+        /// particle closer than <see cref="FluidConstants.WallDistance"/> to one is put at that distance along its normal,
+        /// and its velocity's normal part relative to the surface there, if approaching, is removed (free slip). The collider
+        /// takes the opposite of the particle's momentum change, as a force over the substep of <paramref name="h"/> seconds
+        /// (added to <paramref name="forces"/>, with its torque about the centre to <paramref name="torques"/>). In slot order.
+        /// </summary>
+        public static void CollideMoving(in FluidConstants c, ReadOnlySpan<ColliderShape> colliders, int firstMoving, FluidParticles p,
+            int start, int end, float h, Span<float3> forces, Span<float3> torques, ref FluidPassCounters counters)
+        {
+            float radius = c.WallDistance, mass = c.Mass;
+            for (int i = start; i < end; i++)
+            {
+                float3 x = p.Positions[i];
+                if (!math.all(math.isfinite(x)))
+                    continue;
+                float3 v = p.Velocities[i];
+                for (int w = firstMoving; w < colliders.Length; w++)
+                {
+                    if (!ParticleCollision.Penetration(colliders[w], x, radius, out float3 n, out float depth))
+                        continue;
+                    x += depth * n;
+                    float approach = math.dot(v - colliders[w].VelocityAt(x - radius * n), n);
+                    counters.Contacts++;
+                    if (!(approach < 0f))
+                        continue;
+                    float3 dv = -approach * n;
+                    v += dv;
+                    float3 f = (-mass / h) * dv;
+                    forces[w - firstMoving] += f;
+                    torques[w - firstMoving] += math.cross(x - colliders[w].Center, f);
+                }
+                p.Positions[i] = x;
+                p.Velocities[i] = v;
+            }
         }
 
         /// <summary>
