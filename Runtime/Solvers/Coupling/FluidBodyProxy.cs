@@ -12,7 +12,11 @@ namespace SoftBodyDynamics.Solvers
     /// </summary>
     public struct FluidBodyProxy
     {
-        /// <summary>The shape in world space with its velocities (<see cref="ColliderShape.Velocity"/>, angular about its centre, the centre of mass).</summary>
+        /// <summary>
+        /// The shape in world space with its velocities (<see cref="ColliderShape.Velocity"/>, angular about its centre). The
+        /// fluid's torque is taken about <see cref="ColliderShape.Center"/> and the proxy turns about it: right when that is the
+        /// body's centre of mass (a sphere or <see cref="RestBox"/> of a uniform body), off by (centre − c) × impulse otherwise.
+        /// </summary>
         public ColliderShape Shape;
         /// <summary>Mass (kg); 0 = kinematic: the shape keeps its velocity and the impulse is only reported.</summary>
         public float Mass;
@@ -63,7 +67,7 @@ namespace SoftBodyDynamics.Solvers
                 lo = math.min(lo, restPositions[i]);
                 hi = math.max(hi, restPositions[i]);
             }
-            if (!(math.all(hi >= lo)))
+            if (!math.all(hi >= lo))
                 return ColliderShape.Box(float3.zero, quaternion.identity, new float3(math.max(radius, 0f)));
             return ColliderShape.Box(0.5f * (lo + hi) - restCenter, quaternion.identity, 0.5f * (hi - lo) + math.max(radius, 0f));
         }
@@ -73,18 +77,19 @@ namespace SoftBodyDynamics.Solvers
 
         /// <summary>
         /// Gives the body's particles <see cref="AngularImpulse"/> as a rigid spin, Δvᵢ = (I⁻¹·ΔL) × (xᵢ − c) about the centre of
-        /// mass c: momentum unchanged, angular momentum changed by ΔL (I of the same positions).
+        /// mass c: momentum unchanged, angular momentum changed by ΔL. Call it between the fluid step and the body's step, on
+        /// the positions <see cref="Of"/> read (its <see cref="InverseInertia"/> is theirs).
         /// </summary>
         public void ApplyAngularImpulse(in ParticleBody body)
         {
             if (!(Mass > 0f) || math.all(AngularImpulse == float3.zero))
                 return;
-            RigidFrame frame = RigidFrame.Of(body.Positions, body.Masses);
-            float3 dw = math.mul(frame.InverseInertia, AngularImpulse);
+            float3 dw = math.mul(InverseInertia, AngularImpulse);
             if (!math.all(math.isfinite(dw)))
                 return;
+            float3 center = ShapeMatching.CenterOfMass(body.Positions, body.Masses);
             for (int i = 0; i < body.ParticleCount; i++)
-                body.Velocities[i] += math.cross(dw, body.Positions[i] - frame.Center);
+                body.Velocities[i] += math.cross(dw, body.Positions[i] - center);
         }
 
         /// <summary>

@@ -89,7 +89,7 @@ namespace SoftBodyDynamics.Tests.Solvers
         [Test]
         public void MovingWall_MirrorsVelocitiesInItsOwnFrame()
         {
-            var (c, _) = Blob();
+            var c = new FluidConstants(FluidTestScenes.Water(Spacing, float3.zero, new float3(1f)));
             var sphere = ColliderShape.Sphere(new float3(0.5f, 0.5f, 0.5f), 0.05f);
             float3 xi = new float3(0.5f, 0.56f, 0.5f);
             var moving = new[] { sphere.Moving(new float3(0f, -0.5f, 0f), float3.zero) };
