@@ -67,6 +67,16 @@ float3 ClosestOnSegment(float3 x, float3 a, float3 b)
     return a + t * ab;
 }
 
+// ParticleCollision.Contains: x in the shape or on its surface (a plane's solid is the half-space behind it).
+bool ContainsPoint(Shape s, float3 x)
+{
+    if (s.type == SHAPE_PLANE) return !(dot(x - s.centre, s.axis) > 0.0);
+    if (s.type == SHAPE_SPHERE) { float3 r = x - s.centre; return !(dot(r, r) > s.radius * s.radius); }
+    if (s.type == SHAPE_CAPSULE) { float3 r = x - ClosestOnSegment(x, s.centre, s.axis); return !(dot(r, r) > s.radius * s.radius); }
+    if (s.type == SHAPE_BOX) return !any(abs(Rotate(Conjugate(s.rotation), x - s.centre)) > s.halfExtents);
+    return false;
+}
+
 bool BoxPenetration(Shape s, float3 x, float radius, out float3 normal, out float depth, out bool deep)
 {
     float3 local = Rotate(Conjugate(s.rotation), x - s.centre);

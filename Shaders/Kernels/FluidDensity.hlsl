@@ -41,7 +41,7 @@ void GhostDensity(GhostWalls walls, float3 xi, float3 vi, uint listStart, uint f
         uint j = m < 0 ? 0 : _Neighbours[listStart + (uint)m];
         float3 y = m < 0 ? float3(0.0, 0.0, 0.0) : -PairOffset(xi, _Positions[j].xyz);
         float3 v = m < 0 ? vi : (bulk ? _Velocities[j].xyz : float3(0.0, 0.0, 0.0));
-        if (!MirrorGhost(walls, subset, y, v)) continue;
+        if (!MirrorGhost(walls, subset, xi, y, v)) continue;
         float q = h2 - (y.x * y.x + y.y * y.y + y.z * y.z);
         if (!(q > 0.0)) continue;
         sum += q * q * q;

@@ -39,7 +39,7 @@ float3 GhostPressure(GhostWalls walls, uint i, float3 xi, float3 vi, float pi, f
         float3 source = m < 0 ? float3(0.0, 0.0, 0.0) : -PairOffset(xi, _Positions[j].xyz);
         float3 y = source;
         float3 v = m < 0 ? vi : _Velocities[j].xyz;
-        if (!MirrorGhost(walls, subset, y, v)) continue;
+        if (!MirrorGhost(walls, subset, xi, y, v)) continue;
         float r2 = dot(y, y);
         if (!(r2 < H2)) continue;
         float r = sqrt(r2);

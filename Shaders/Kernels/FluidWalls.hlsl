@@ -14,23 +14,25 @@ struct GhostWalls
 {
     float3 n[MAX_GHOST_WALLS];
     float d[MAX_GHOST_WALLS];
+    int collider[MAX_GHOST_WALLS]; // index in the colliders, −1 for a face
     uint count;
 };
 
 // FluidGhostWalls.Add: of two walls facing the same way only the nearer counts.
-void AddGhostWall(inout GhostWalls w, float3 n, float d)
+void AddGhostWall(inout GhostWalls w, float3 n, float d, int collider)
 {
     if (!(d >= -FLOAT_MAX)) return;
     d = max(d, 0.0);
     for (uint k = 0; k < w.count; k++)
     {
         if (!(dot(n, w.n[k]) > SAME_WALL_COSINE)) continue;
-        if (d < w.d[k]) { w.n[k] = n; w.d[k] = d; }
+        if (d < w.d[k]) { w.n[k] = n; w.d[k] = d; w.collider[k] = collider; }
         return;
     }
     if (w.count >= MAX_GHOST_WALLS) return;
     w.n[w.count] = n;
     w.d[w.count] = d;
+    w.collider[w.count] = collider;
     w.count++;
 }
 
@@ -38,7 +40,7 @@ void AddGhostWall(inout GhostWalls w, float3 n, float d)
 GhostWalls NearWalls(float3 xi)
 {
     GhostWalls w;
-    [unroll] for (uint k = 0; k < MAX_GHOST_WALLS; k++) { w.n[k] = float3(0.0, 0.0, 0.0); w.d[k] = 0.0; }
+    [unroll] for (uint k = 0; k < MAX_GHOST_WALLS; k++) { w.n[k] = float3(0.0, 0.0, 0.0); w.d[k] = 0.0; w.collider[k] = -1; }
     w.count = 0;
     float h = SmoothingLength;
     [unroll] for (int a = 0; a < 3; a++)
@@ -47,21 +49,22 @@ GhostWalls NearWalls(float3 xi)
         float3 axis = float3(0.0, 0.0, 0.0);
         axis[a] = 1.0;
         float below = xi[a] - DomainMin[a], above = DomainMax[a] - xi[a];
-        if (below < h) AddGhostWall(w, axis, below);
-        if (above < h) AddGhostWall(w, -axis, above);
+        if (below < h) AddGhostWall(w, axis, below, -1);
+        if (above < h) AddGhostWall(w, -axis, above, -1);
     }
     for (uint c = 0; c < ColliderCount && w.count < MAX_GHOST_WALLS; c++)
     {
         // Penetration with radius h reports depth = h − d for every point closer than h to the surface.
         float3 normal; float depth; bool deep;
-        if (Penetration(LoadShape(c), xi, h, normal, depth, deep)) AddGhostWall(w, normal, h - depth);
+        if (Penetration(LoadShape(c), xi, h, normal, depth, deep)) AddGhostWall(w, normal, h - depth, (int)c);
     }
     return w;
 }
 
 // FluidGhostWalls.Mirror: the source offset y (xⱼ − xᵢ) and its velocity mirrored through every wall of the subset (a bit
-// mask), in wall order; false when the source is not strictly on the fluid side of one of them.
-bool MirrorGhost(GhostWalls w, uint subset, inout float3 y, inout float3 v)
+// mask), in wall order; false when the source is not strictly on the fluid side of one of them, or when the subset is one
+// collider's wall and the image (at xi + y) lies outside that collider.
+bool MirrorGhost(GhostWalls w, uint subset, float3 xi, inout float3 y, inout float3 v)
 {
     for (uint k = 0; k < w.count; k++)
     {
@@ -72,7 +75,11 @@ bool MirrorGhost(GhostWalls w, uint subset, inout float3 y, inout float3 v)
         y -= 2.0 * s * n;
         v -= 2.0 * dot(v, n) * n;
     }
-    return true;
+    if ((subset & (subset - 1u)) != 0u) return true;
+    uint single = firstbitlow(subset);
+    if (w.collider[single] < 0) return true;
+    Shape s = LoadShape((uint)w.collider[single]);
+    return s.type == SHAPE_PLANE || ContainsPoint(s, xi + y);
 }
 
 // SphKernels.WallDensityFraction: ∫W dV of poly6 beyond a plane at distance d, as a fraction of ρ₀.

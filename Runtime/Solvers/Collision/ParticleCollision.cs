@@ -163,6 +163,25 @@ namespace SoftBodyDynamics.Solvers
             return d2 > 1e-24f ? r * math.rsqrt(d2) : new float3(0f, 1f, 0f);
         }
 
+        /// <summary>True when <paramref name="x"/> lies in <paramref name="shape"/> or on its surface (a plane's solid is the half-space behind it).</summary>
+        public static bool Contains(in ColliderShape shape, float3 x)
+        {
+            switch (shape.Type)
+            {
+                case ColliderShapeType.Plane:
+                    return !(math.dot(x - shape.Center, shape.Axis) > 0f);
+                case ColliderShapeType.Sphere:
+                    return !(math.lengthsq(x - shape.Center) > shape.Radius * shape.Radius);
+                case ColliderShapeType.Capsule:
+                    return !(math.lengthsq(x - ClosestOnSegment(x, shape.Center, shape.Axis)) > shape.Radius * shape.Radius);
+                case ColliderShapeType.Box:
+                    float3 local = math.rotate(math.conjugate(shape.Rotation), x - shape.Center);
+                    return !math.any(math.abs(local) > shape.HalfExtents);
+                default:
+                    return false;
+            }
+        }
+
         /// <summary>Closest point to <paramref name="x"/> on the segment a–b.</summary>
         public static float3 ClosestOnSegment(float3 x, float3 a, float3 b)
         {

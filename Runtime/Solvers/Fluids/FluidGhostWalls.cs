@@ -139,5 +139,24 @@ namespace SoftBodyDynamics.Solvers
             }
             return true;
         }
+
+        /// <summary>
+        /// <see cref="Mirror(int, ref float3, ref float3)"/>, and false too when <paramref name="subset"/> is one collider's wall
+        /// and the image, at <paramref name="xi"/> + y, lies outside that collider: a tangent plane beside a box's edge or on a
+        /// sphere extends beyond the solid, and an image there would stand where fluid is (counted twice). A plane's images are
+        /// all in it; a set of several walls keeps its images (they fill the corners between a collider and a face).
+        /// </summary>
+        public bool Mirror(int subset, float3 xi, ReadOnlySpan<ColliderShape> colliders, ref float3 y, ref float3 v)
+        {
+            if (!Mirror(subset, ref y, ref v))
+                return false;
+            if ((subset & (subset - 1)) != 0)
+                return true;
+            int k = 0;
+            while (subset >> k != 1)
+                k++;
+            int w = Collider(k);
+            return w < 0 || colliders[w].Type == ColliderShapeType.Plane || ParticleCollision.Contains(colliders[w], xi + y);
+        }
     }
 }

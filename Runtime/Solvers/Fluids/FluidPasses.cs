@@ -156,7 +156,7 @@ namespace SoftBodyDynamics.Solvers
                 {
                     var walls = FluidGhostWalls.Near(c, colliders, xi);
                     if (walls.Count > 0)
-                        GhostDensity(c, walls, x, velocities, neighbours.Slice(listStart, found), xi, vi, bulk, ref sum, ref spiky, ref divergence, offset);
+                        GhostDensity(c, walls, colliders, x, velocities, neighbours.Slice(listStart, found), xi, vi, bulk, ref sum, ref spiky, ref divergence, offset);
                 }
                 float rho = StoreDensity(c, colliders, s, i, xi, sum, ref counters);
                 if (tait)
@@ -205,7 +205,7 @@ namespace SoftBodyDynamics.Solvers
         /// (h² − r²)³ and (h − r)²·r, and with <paramref name="bulk"/> (vᵢ − v_g)·xᵢ_g·(h² − r²)² with the image's mirrored
         /// velocity (free slip).
         /// </summary>
-        static void GhostDensity<TOffset>(in FluidConstants c, in FluidGhostWalls walls, ReadOnlySpan<float3> x, ReadOnlySpan<float3> velocities,
+        static void GhostDensity<TOffset>(in FluidConstants c, in FluidGhostWalls walls, ReadOnlySpan<ColliderShape> colliders, ReadOnlySpan<float3> x, ReadOnlySpan<float3> velocities,
             ReadOnlySpan<int> list, float3 xi, float3 vi, bool bulk, ref float sum, ref float spiky, ref float divergence, TOffset offset)
             where TOffset : struct, IPairOffset
         {
@@ -216,7 +216,7 @@ namespace SoftBodyDynamics.Solvers
                 {
                     float3 y = m < 0 ? float3.zero : -offset.Of(xi, x[list[m]]);
                     float3 v = m < 0 ? vi : bulk ? velocities[list[m]] : float3.zero;
-                    if (!walls.Mirror(subset, ref y, ref v))
+                    if (!walls.Mirror(subset, xi, colliders, ref y, ref v))
                         continue;
                     float q = h2 - (y.x * y.x + y.y * y.y + y.z * y.z);
                     if (!(q > 0f))
@@ -351,7 +351,7 @@ namespace SoftBodyDynamics.Solvers
             }
             var walls = FluidGhostWalls.Near(c, colliders, xi);
             if (walls.Count > 0)
-                sum += GhostPressure(c, walls, p, s, list, xi, vi, pi, rhoi, alphaCh, 0, 0, offset);
+                sum += GhostPressure(c, walls, colliders, p, s, list, xi, vi, pi, rhoi, alphaCh, 0, 0, offset);
             sum *= -c.Mass * k.SpikyGradientCoefficient * c.GradientCorrection;
             return prm.Gravity + sum;
         }
@@ -394,7 +394,7 @@ namespace SoftBodyDynamics.Solvers
                 {
                     if ((moving & (1 << w)) == 0)
                         continue;
-                    float3 f = scale * GhostPressure(c, walls, p, s, list, xi, p.Velocities[i], s.Pressures[i], s.Densities[i], alphaCh,
+                    float3 f = scale * GhostPressure(c, walls, colliders, p, s, list, xi, p.Velocities[i], s.Pressures[i], s.Densities[i], alphaCh,
                         1 << w, moving, offset);
                     int slot = walls.Collider(w) - firstMoving;
                     forces[slot] += f;
@@ -411,7 +411,7 @@ namespace SoftBodyDynamics.Solvers
         /// In the pair sum's units, before its factor −m·C_spiky·κ∇. With <paramref name="only"/> ≠ 0, only the images through a
         /// set of walls that includes <paramref name="only"/>'s, each weighted 1/(the set's walls in <paramref name="shared"/>).
         /// </summary>
-        static float3 GhostPressure<TOffset>(in FluidConstants c, in FluidGhostWalls walls, FluidParticles p, FluidScratch s, ReadOnlySpan<int> list,
+        static float3 GhostPressure<TOffset>(in FluidConstants c, in FluidGhostWalls walls, ReadOnlySpan<ColliderShape> colliders, FluidParticles p, FluidScratch s, ReadOnlySpan<int> list,
             float3 xi, float3 vi, float pi, float rhoi, float alphaCh, int only, int shared, TOffset offset) where TOffset : struct, IPairOffset
         {
             SphKernels k = c.Kernels;
@@ -432,7 +432,7 @@ namespace SoftBodyDynamics.Solvers
                     float3 source = j < 0 ? float3.zero : -offset.Of(xi, x[j]);
                     float3 y = source;
                     float3 v = j < 0 ? vi : velocities[j];
-                    if (!walls.Mirror(subset, ref y, ref v))
+                    if (!walls.Mirror(subset, xi, colliders, ref y, ref v))
                         continue;
                     float r2 = math.dot(y, y);
                     if (!(r2 < k.H2))

@@ -57,6 +57,50 @@ namespace SoftBodyDynamics.Tests.Solvers
                 Assert.AreEqual(p.RestDensity, rho, 1e-5f * rho);
         }
 
+        [Test]
+        public void LatticeAroundABoxCollider_ReadsTheInteriorsDensityAtItsEdges()
+        {
+            // A square bar through a periodic z, its faces half a spacing off a lattice that fills the rest of a box: beside a
+            // convex edge the closest point is on the edge and the mirror plane is diagonal; its images of the sources in the
+            // edge's quadrant are the lattice's sites inside the bar, and those of the sources beside the faces would land
+            // where fluid is. Keeping only the images inside the bar, every particle reads the infinite lattice's density,
+            // ρ₀, to the float32 round-off of sums in another order (1e-5 relative); counting the others too makes the
+            // particles diagonal to the edges 26 % denser. The bar stands 5 spacings (> 2h) off the domain's faces.
+            float dx = 0.02f;
+            int n = 14, nz = 6, lo = 5, hi = 9;
+            FluidParameters p = FluidTestScenes.Water(dx, float3.zero, new float3(n * dx, n * dx, nz * dx));
+            p.Periodic = new bool3(false, false, true);
+            var c = new FluidConstants(p);
+            var bar = new[] { ColliderShape.Box(new float3(0.5f * (lo + hi) * dx, 0.5f * (lo + hi) * dx, 0.5f * nz * dx), quaternion.identity,
+                new float3(0.5f * (hi - lo) * dx, 0.5f * (hi - lo) * dx, nz * dx)) };
+            var b = new FluidBuffers(n * n * nz, c.Grid);
+            int count = 0;
+            for (int z = 0; z < nz; z++)
+            for (int y = 0; y < n; y++)
+            for (int x = 0; x < n; x++)
+            {
+                if (x >= lo && x < hi && y >= lo && y < hi)
+                    continue;
+                b.Positions[count] = (new float3(x, y, z) + 0.5f) * dx;
+                b.Ids[count] = count;
+                count++;
+            }
+            b.Status.Count = count;
+            var counters = new FluidPassCounters();
+            int live = FluidSolver.SortParticles(c, b.Particles, b.Scratch, count, false, ref counters);
+            FluidPasses.Density(c, bar, b.Particles, b.Scratch, 0, live, ref counters);
+            int edges = 0;
+            for (int i = 0; i < live; i++)
+            {
+                float3 x = b.Positions[i];
+                Assert.AreEqual(p.RestDensity, b.Densities[i], 1e-5f * p.RestDensity, $"density at {x}");
+                float fromX = math.abs(x.x - bar[0].Center.x) - bar[0].HalfExtents.x, fromY = math.abs(x.y - bar[0].Center.y) - bar[0].HalfExtents.y;
+                if (fromX > 0f && fromX < dx && fromY > 0f && fromY < dx)
+                    edges++;
+            }
+            Assert.AreEqual(4 * nz, edges, "a particle diagonal to each edge in every layer");
+        }
+
         /// <summary>Sorts the block in <paramref name="b"/> (its Status.Count particles) and runs the Density pass; returns the live count.</summary>
         static int SortAndDensity(in FluidConstants c, FluidBuffers b)
         {
