@@ -24,6 +24,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             new FluidStandingWaveSuite(),
             new FluidDropletSuite(),
             new FluidThroughputSuite(),
+            new FluidCouplingSuite(),
             new EffectCostSuite(),
             new RendererEffectCostSuite(),
         };
