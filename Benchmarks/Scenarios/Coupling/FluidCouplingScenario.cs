@@ -126,14 +126,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
 
         void Restart()
         {
-            FluidBuffers b = m_Fluid;
-            int n = m_Initial.Length;
-            Array.Copy(m_Initial, b.Positions, n);
-            Array.Clear(b.Velocities, 0, n);
-            Array.Clear(b.Ages, 0, n);
-            for (int i = 0; i < n; i++)
-                b.Ids[i] = i;
-            b.Status = new FluidStatus { Count = n, NextId = n, Spawned = n };
+            FluidScene.Restart(m_Fluid, m_Initial);
             m_Proxies[0] = m_StartProxy;
             m_Sum = m_Count = 0;
             m_Items = 0;

@@ -81,12 +81,7 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         void Run(int frames)
         {
             FluidBuffers b = m_Buffers;
-            Array.Copy(m_Initial, b.Positions, Size);
-            Array.Clear(b.Velocities, 0, Size);
-            Array.Clear(b.Ages, 0, Size);
-            for (int i = 0; i < Size; i++)
-                b.Ids[i] = i;
-            b.Status = new FluidStatus { Count = Size, NextId = Size, Spawned = Size };
+            FluidScene.Restart(b, m_Initial);
             double radius = Math.Pow(3.0 * Size * k_Spacing * k_Spacing * k_Spacing / (4 * Math.PI), 1.0 / 3.0);
             m_Items = 0;
             m_TimeToRound = double.NaN;

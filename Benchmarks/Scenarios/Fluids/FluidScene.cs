@@ -58,6 +58,22 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
         public static FluidStepReport Step(in FluidConstants c, FluidBuffers b, float dt) =>
             FluidSolver.Step(c, ReadOnlySpan<ColliderShape>.Empty, dt, b.Particles, b.Scratch, ref b.Status);
 
+        /// <summary>
+        /// Back to a run's start: the particles at <paramref name="initial"/> (all of it), at rest, ages and lifetimes 0, ids
+        /// their slots, as if just spawned.
+        /// </summary>
+        public static void Restart(FluidBuffers b, float3[] initial)
+        {
+            int n = initial.Length;
+            Array.Copy(initial, b.Positions, n);
+            Array.Clear(b.Velocities, 0, n);
+            Array.Clear(b.Ages, 0, n);
+            Array.Clear(b.Lifetimes, 0, n);
+            for (int i = 0; i < n; i++)
+                b.Ids[i] = i;
+            b.Status = new FluidStatus { Count = n, NextId = n, Spawned = n };
+        }
+
         /// <summary>Fills the box [<paramref name="lo"/>, <paramref name="hi"/>) with a cubic lattice at the fluid's spacing (first point half a spacing in) and returns the count.</summary>
         public static int FillBlock(FluidBuffers b, float3 lo, float3 hi, float spacing)
         {

@@ -31,6 +31,18 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             m_Starts = new int[BodyContacts.TableSize(n) + 1];
             m_Sorted = new int[n];
             m_Buckets = new int[n];
+            // Owners and inverse masses never change; positions, velocities and radii are read each resolve.
+            int k = 0;
+            for (int b = 0; b < bodies.Length; b++)
+            {
+                float[] masses = bodies[b].Model.Masses, inverse = bodies[b].Model.InverseMasses;
+                bool pins = inverse != null && inverse.Length == masses.Length;
+                for (int i = 0; i < masses.Length; i++, k++)
+                {
+                    m_InverseMasses[k] = pins ? inverse[i] : 1f / masses[i];
+                    m_Owners[k] = b;
+                }
+            }
         }
 
         /// <summary>
@@ -68,15 +80,11 @@ namespace SoftBodyDynamics.Benchmarks.Scenarios
             for (int b = 0; b < m_Bodies.Length; b++)
             {
                 var body = m_Bodies[b];
-                float[] masses = body.Model.Masses, inverse = body.Model.InverseMasses;
-                bool pins = inverse != null && inverse.Length == masses.Length;
                 for (int i = 0; i < body.Positions.Length; i++, k++)
                 {
                     m_Positions[k] = body.Positions[i] + body.Status.Origin;
                     m_Velocities[k] = body.Velocities[i];
-                    m_InverseMasses[k] = pins ? inverse[i] : 1f / masses[i];
                     m_Radii[k] = body.Parameters.Body.ParticleRadius;
-                    m_Owners[k] = b;
                 }
             }
             var report = BodyContacts.Resolve(new BodyContactParticles(m_Positions, m_Velocities, m_InverseMasses, m_Radii, m_Owners),
